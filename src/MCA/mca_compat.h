@@ -25,9 +25,12 @@
 #include "mca_config.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "modify.h"
+#include "neigh_request.h"
+#include "neighbor.h"
 #include "utils.h"
 
 #ifdef MCA_HAVE_TYPE_LABELS
@@ -38,6 +41,9 @@
 #include <string>
 
 namespace LAMMPS_NS {
+
+class Fix;
+class Pair;
 
 // argument-checking helpers that newer LAMMPS versions provide in utils::
 namespace utils {
@@ -128,6 +134,32 @@ namespace MCACompat {
 #else
     const int ifix = modify->find_fix(id);
     return (ifix < 0) ? nullptr : modify->fix[ifix];
+#endif
+  }
+
+  // an occasional full neighbor list for a fix (built on demand with build_one)
+  inline void request_full_occasional(Neighbor *neighbor, Fix *fix, int instance)
+  {
+#ifdef MCA_HAVE_ADD_REQUEST
+    (void) instance;
+    neighbor->add_request(fix, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+#else
+    const int irequest = neighbor->request(fix, instance);
+    neighbor->requests[irequest]->pair = 0;
+    neighbor->requests[irequest]->fix = 1;
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->occasional = 1;
+#endif
+  }
+
+  // forward communication of per-atom data of a pair style
+  inline void forward_comm(Comm *comm, Pair *pair)
+  {
+#ifdef MCA_HAVE_COMM_OVERLOADS
+    comm->forward_comm(pair);
+#else
+    comm->forward_comm_pair(pair);
 #endif
   }
 

@@ -139,6 +139,357 @@ namespace MCAKernels {
     rotate_quaternion(q, omega, dtv);
   }
 
+  /* ======================================================================
+     Elastic MCA interaction of a linked pair
+     ======================================================================
+
+     Conventions (see doc/src/pair_mca.rst):
+     - a pair is stored and computed in canonical order: "lo" is the
+       automaton with the lower atom ID, "hi" the other; n points lo -> hi
+     - tractions are tension positive; sigma is the normal traction and t
+       the shear traction vector acting on lo (on hi they act with opposite
+       sign), both per unit contact area
+     - each automaton keeps its half of the pair state (strain, tractions,
+       couple); the Newton-3 splits below make the two halves equal
+     - q0 = reference distance from an automaton's centre to the contact
+       plane (q0_lo + q0_hi = reference length r0), q = q0 (1 + eps)        */
+
+  // layout of the per-link history (doubles); both owners store all of it
+  enum LinkHistory {
+    H_STATE = 0,     // link state (LINKED)
+    H_R0,            // reference length r0
+    H_Q0LO,          // reference half lengths
+    H_Q0HI,
+    H_A0,            // reference contact area
+    H_RPREV,         // length at the last step
+    H_NPREV,         // unit normal lo -> hi at the last step (3)
+    H_APREV = H_NPREV + 3,    // contact area at the last step
+    H_WORK,                   // elastic energy of the link
+    H_LO,                     // half of lo: sigma, eps, t(3), couple(3)
+    H_HI = H_LO + 8,          // half of hi
+    H_SIZE = H_HI + 8
+  };
+  // offsets inside a half
+  enum LinkHalf { HALF_SIG = 0, HALF_EPS, HALF_T, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8 };
+  enum LinkState { LINK_NONE = 0, LINK_LINKED = 1 };
+
+  MCA_INLINE double dot3(const double *a, const double *b)
+  {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
+
+  MCA_INLINE void cross3(const double *a, const double *b, double *c)
+  {
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+  }
+
+  /* ----------------------------------------------------------------------
+     isotropic material: shear and bulk modulus from E and nu, and the
+     coupling factor of the mean stress in the normal law,
+       D = 1 - 2G/(3K) = lambda/K = 3 nu/(1 + nu)
+     (the source prints 1 - 2G/K; only 1 - 2G/(3K) reproduces Hooke's law)
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE double shear_modulus(double E, double nu)
+  {
+    return E / (2.0 * (1.0 + nu));
+  }
+
+  MCA_INLINE double bulk_modulus(double E, double nu)
+  {
+    return E / (3.0 * (1.0 - 2.0 * nu));
+  }
+
+  MCA_INLINE double mean_stress_coupling(double G, double K)
+  {
+    return 1.0 - 2.0 * G / (3.0 * K);
+  }
+
+  // P-wave speed sqrt((K + 4G/3)/rho)
+  MCA_INLINE double p_wave_speed(double G, double K, double rho)
+  {
+    return sqrt((K + 4.0 * G / 3.0) / rho);
+  }
+
+  // contact face area of a cell: R A N_c = 3 Omega
+  MCA_INLINE double face_area(int packing, double radius, double volume)
+  {
+    return 3.0 * volume / (packing * radius);
+  }
+
+  /* second moment of area of a contact face about an in-plane axis
+     through its centre, isotropic average (half the polar moment), in
+     units of A^2: square face of the sc cube (2R)^4/12 / (4R^2)^2 = 1/12;
+     rhombic face of the fcc cell (diagonals 2R, sqrt(2) R): sqrt(2)/16 */
+
+  MCA_INLINE double face_moment_factor(int packing)
+  {
+    if (packing == PACKING_SC) return 1.0 / 12.0;
+    return 0.08838834764831845;    // sqrt(2)/16
+  }
+
+  /* ----------------------------------------------------------------------
+     mean-stress predictor (thesis eqs. 3.74-3.95, corrected):
+     stiffness of a half for the predicted strain, interpolated between an
+     isolated pair (H1) and a complete environment that does not move (Hc)
+     by the number of interacting neighbours N
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE double predictor_stiffness(double G, double K, int nc, int n)
+  {
+    const double D = mean_stress_coupling(G, K);
+    const double h1 = 2.0 * G * nc / (nc - D);
+    const double hc = 2.0 * G + (3.0 * K - 2.0 * G) / nc;
+    if (nc <= 1 || n <= 1) return h1;
+    const int m = (n < nc) ? n : nc;
+    return h1 + (hc - h1) * (m - 1) / (nc - 1.0);
+  }
+
+  // predicted normal strain increment of half i for a length change dr
+  MCA_INLINE double predicted_strain(double sig_i, double sig_j, double h_i, double h_j,
+                                     double q0_i, double q0_j, double dr)
+  {
+    return (q0_j * (sig_j - sig_i) + h_j * dr) / (h_i * q0_j + h_j * q0_i);
+  }
+
+  /* predicted mean-stress increment from the sum of the predicted strains
+     of the n interacting pairs of an automaton of coordination nc; the
+     nc - n missing neighbours are a free surface (zero traction, 3.92-3.94) */
+
+  MCA_INLINE double predicted_mean_stress_increment(double sum_strain, double G, double K, int nc,
+                                                    int n)
+  {
+    const double divisor = n + (nc - n) * 1.5 * K / G;
+    return 3.0 * K * sum_strain / divisor;
+  }
+
+  /* ----------------------------------------------------------------------
+     normal strain increments of the two halves such that their tractions
+     stay equal (Newton 3), for unequal materials and sizes:
+       sig_i + 2G_i de_i + D_i dsm_i = sig_j + 2G_j de_j + D_j dsm_j
+       q0_i de_i + q0_j de_j = dr
+     (the source's eq. 3.68 has 2G_i where 2G_j belongs)
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void split_normal_strain(double sig_i, double sig_j, double g_i, double g_j,
+                                      double d_i, double d_j, double dsm_i, double dsm_j,
+                                      double q0_i, double q0_j, double dr, double &de_i,
+                                      double &de_j)
+  {
+    de_i = (q0_j * (sig_j - sig_i + d_j * dsm_j - d_i * dsm_i) + 2.0 * g_j * dr) /
+        (2.0 * g_i * q0_j + 2.0 * g_j * q0_i);
+    de_j = (dr - q0_i * de_i) / q0_j;
+  }
+
+  /* ----------------------------------------------------------------------
+     tangential displacement of the contact point of j relative to that of
+     i during a step: the change of the centre-to-centre vector (from the
+     positions, so that displacements made between runs count too) minus
+     the part carried by the spins, both normal to the current normal n.
+     Zero for a rigid motion of the pair up to O(angle^3) (thesis 3.107-3.109
+     without the 1/r, there written with the velocities).
+       del, del_old   centre-to-centre vector now and at the last step
+       w_i, w_j       angular velocities over the step (spin increments w dt)
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void contact_slip(const double *n, const double *del, const double *del_old,
+                               double q_i, double q_j, const double *w_i, const double *w_j,
+                               double dt, double *dl)
+  {
+    const double s[3] = {dt * (q_i * w_i[0] + q_j * w_j[0]), dt * (q_i * w_i[1] + q_j * w_j[1]),
+                         dt * (q_i * w_i[2] + q_j * w_j[2])};
+    double sxn[3];
+    cross3(s, n, sxn);
+    const double dd[3] = {del[0] - del_old[0], del[1] - del_old[1], del[2] - del_old[2]};
+    const double ddn = dot3(dd, n);
+    for (int m = 0; m < 3; m++) dl[m] = dd[m] - ddn * n[m] - sxn[m];
+  }
+
+  /* ----------------------------------------------------------------------
+     shear strain increments of the two halves with equal resulting shear
+     tractions (thesis 3.104-3.106, solved exactly for unequal G and q):
+       t_i + 2G_i dg_i = t_j + 2G_j dg_j,   q_i dg_i + q_j dg_j = dl
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void split_shear_strain(const double *t_i, const double *t_j, double g_i, double g_j,
+                                     double q_i, double q_j, const double *dl, double *dg_i,
+                                     double *dg_j)
+  {
+    const double inv = 1.0 / (g_i * q_j + g_j * q_i);
+    for (int k = 0; k < 3; k++) {
+      dg_i[k] = (g_j * dl[k] + 0.5 * q_j * (t_j[k] - t_i[k])) * inv;
+      dg_j[k] = (dl[k] - q_i * dg_i[k]) / q_j;
+    }
+  }
+
+  /* ----------------------------------------------------------------------
+     carry a vector of the pair frame along with the pair: the minimal
+     rotation that takes the old normal a to the new normal b, then a twist
+     by angle phi about b; finally the component along b is removed so that
+     shear tractions and couples stay in the tangent plane
+     (only for tangential vectors; the normal component is dropped)
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void rotate_tangential(double *v, const double *a, const double *b, double phi)
+  {
+    double k[3];
+    cross3(a, b, k);
+    const double c = dot3(a, b);
+    double kxv[3], r[3];
+    cross3(k, v, kxv);
+    const double kv = dot3(k, v);
+    const double f = (c > -1.0 + 1.0e-12) ? 1.0 / (1.0 + c) : 0.0;
+    for (int m = 0; m < 3; m++) r[m] = v[m] * c + kxv[m] + k[m] * kv * f;
+    if (phi != 0.0) {
+      double bxr[3];
+      cross3(b, r, bxr);
+      const double cp = cos(phi), sp = sin(phi);
+      for (int m = 0; m < 3; m++) r[m] = r[m] * cp + bxr[m] * sp;
+    }
+    const double rb = dot3(r, b);
+    for (int m = 0; m < 3; m++) v[m] = r[m] - rb * b[m];
+  }
+
+  // contact area from the mean stresses (thesis 3.65): A r = A0 r0 (1 + mean volumetric strain)
+  MCA_INLINE double contact_area(double a0, double r0, double r, double sm_i, double k_i,
+                                 double sm_j, double k_j)
+  {
+    return a0 * (r0 / r) * (1.0 + 0.5 * (sm_i / k_i + sm_j / k_j));
+  }
+
+  /* ----------------------------------------------------------------------
+     one step of a linked pair: all inputs in canonical order (lo, hi)
+
+     in:  hist      link history (H_SIZE doubles) at the last step
+          x, w      position and angular velocity of lo and hi
+                    (x_hi is the image of hi closest to lo)
+          g, d, k   shear modulus, mean-stress coupling, bulk modulus
+          dsm       mean-stress increments to apply this step
+          sm        predicted mean stresses (for the contact area)
+          chi       face second moment / area^2
+          dt        time step
+     out: hist      updated history (the caller keeps or discards it)
+          f         force on lo (on hi: -f)
+          tq_lo, tq_hi  torques on lo and hi
+          sig       normal traction of the pair (for the mean stress)
+          s6        contribution to the stress tensors of both automata,
+                    per unit weight q0 A0 / Omega: sig n n + sym(n t)
+          r, nvec   current length and normal
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void linked_pair(double *hist, const double *x_lo, const double *x_hi,
+                              const double *w_lo, const double *w_hi, double g_lo, double g_hi, double d_lo,
+                              double d_hi, double k_lo, double k_hi, double dsm_lo, double dsm_hi,
+                              double sm_lo, double sm_hi, double chi, double dt, double *f,
+                              double *tq_lo, double *tq_hi, double &sig, double *s6, double &r,
+                              double *nvec)
+  {
+    double *lo = hist + H_LO;
+    double *hi = hist + H_HI;
+    const double del[3] = {x_hi[0] - x_lo[0], x_hi[1] - x_lo[1], x_hi[2] - x_lo[2]};
+    r = sqrt(dot3(del, del));
+    const double rinv = 1.0 / r;
+    for (int m = 0; m < 3; m++) nvec[m] = del[m] * rinv;
+    const double *n = nvec;
+    const double q0_lo = hist[H_Q0LO], q0_hi = hist[H_Q0HI];
+    const double dr = r - hist[H_RPREV];
+
+    // normal tractions
+    double de_lo, de_hi;
+    const double sig_lo0 = lo[HALF_SIG], sig_hi0 = hi[HALF_SIG];
+    split_normal_strain(sig_lo0, sig_hi0, g_lo, g_hi, d_lo, d_hi, dsm_lo, dsm_hi, q0_lo, q0_hi,
+                        dr, de_lo, de_hi);
+    lo[HALF_EPS] += de_lo;
+    hi[HALF_EPS] += de_hi;
+    lo[HALF_SIG] = sig_lo0 + 2.0 * g_lo * de_lo + d_lo * dsm_lo;
+    hi[HALF_SIG] = sig_hi0 + 2.0 * g_hi * de_hi + d_hi * dsm_hi;
+    const double q_lo = q0_lo * (1.0 + lo[HALF_EPS]);
+    const double q_hi = q0_hi * (1.0 + hi[HALF_EPS]);
+
+    // carry shear tractions and couples along with the pair
+    const double phi = 0.5 * dt * (dot3(w_lo, n) + dot3(w_hi, n));
+    // (t_old, c_old: the shear traction and couple that acted at the last
+    // step, for the work of this step)
+    const double *n_old = hist + H_NPREV;
+    double t_old[3], c_old[3];
+    for (int m = 0; m < 3; m++) {
+      t_old[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
+      c_old[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
+    }
+    rotate_tangential(lo + HALF_T, n_old, n, phi);
+    rotate_tangential(hi + HALF_T, n_old, n, phi);
+    rotate_tangential(lo + HALF_COUPLE, n_old, n, phi);
+    rotate_tangential(hi + HALF_COUPLE, n_old, n, phi);
+
+    // shear tractions
+    double dl[3], dg_lo[3], dg_hi[3];
+    const double rprev = hist[H_RPREV];
+    const double del_old[3] = {rprev * n_old[0], rprev * n_old[1], rprev * n_old[2]};
+    contact_slip(n, del, del_old, q_lo, q_hi, w_lo, w_hi, dt, dl);
+    split_shear_strain(lo + HALF_T, hi + HALF_T, g_lo, g_hi, q_lo, q_hi, dl, dg_lo, dg_hi);
+    for (int m = 0; m < 3; m++) {
+      lo[HALF_T + m] += 2.0 * g_lo * dg_lo[m];
+      hi[HALF_T + m] += 2.0 * g_hi * dg_hi[m];
+    }
+
+    // contact area and pair force on lo
+    const double area = contact_area(hist[H_A0], hist[H_R0], r, sm_lo, k_lo, sm_hi, k_hi);
+    sig = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
+    double t[3];
+    for (int m = 0; m < 3; m++) {
+      t[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
+      f[m] = area * (sig * n[m] + t[m]);
+    }
+
+    // bending and torsion: the faces act as two elastic layers of
+    // thickness q_lo, q_hi in series; the relative rotation splits into
+    // twist (along n) and bending (normal to n)
+    const double compliance = q_lo / (2.0 * g_lo) + q_hi / (2.0 * g_hi);
+    const double kbend = chi * area * area / compliance;
+    double dth[3] = {dt * (w_hi[0] - w_lo[0]), dt * (w_hi[1] - w_lo[1]), dt * (w_hi[2] - w_lo[2])};
+    const double twist = dot3(dth, n);
+    double dcouple[3];
+    for (int m = 0; m < 3; m++)
+      dcouple[m] = kbend * (dth[m] - twist * n[m]) + 2.0 * kbend * twist * n[m];
+    for (int m = 0; m < 3; m++) {
+      lo[HALF_COUPLE + m] += dcouple[m];
+      hi[HALF_COUPLE + m] += dcouple[m];
+    }
+    double couple[3];
+    for (int m = 0; m < 3; m++) couple[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
+
+    // torques: moment of the shear force about each centre, plus the couple
+    double nxf[3];
+    cross3(n, f, nxf);
+    for (int m = 0; m < 3; m++) {
+      tq_lo[m] = q_lo * nxf[m] + couple[m];
+      tq_hi[m] = q_hi * nxf[m] - couple[m];
+    }
+
+    // stress contribution: sig n n + sym(n t)
+    s6[0] = sig * n[0] * n[0] + n[0] * t[0];
+    s6[1] = sig * n[1] * n[1] + n[1] * t[1];
+    s6[2] = sig * n[2] * n[2] + n[2] * t[2];
+    s6[3] = sig * n[0] * n[1] + 0.5 * (n[0] * t[1] + n[1] * t[0]);
+    s6[4] = sig * n[0] * n[2] + 0.5 * (n[0] * t[2] + n[2] * t[0]);
+    s6[5] = sig * n[1] * n[2] + 0.5 * (n[1] * t[2] + n[2] * t[1]);
+
+    // elastic energy: work of the pair forces over the step, trapezoidal
+    // rule with the forces that acted at the last step and now
+    const double sig_old = 0.5 * (sig_lo0 + sig_hi0);
+    const double a_old = hist[H_APREV];
+    double work = 0.5 * (a_old * sig_old + area * sig) * dr;
+    for (int m = 0; m < 3; m++)
+      work += 0.5 * (a_old * t_old[m] + area * t[m]) * dl[m] + 0.5 * (c_old[m] + couple[m]) * dth[m];
+    hist[H_WORK] += work;
+
+    hist[H_RPREV] = r;
+    for (int m = 0; m < 3; m++) hist[H_NPREV + m] = n[m];
+    hist[H_APREV] = area;
+  }
+
 }    // namespace MCAKernels
 }    // namespace LAMMPS_NS
 

@@ -1,0 +1,130 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "compute_mca_atom.h"
+
+#include "atom.h"
+#include "atom_vec_mca.h"
+#include "error.h"
+#include "fix_mca_links.h"
+#include "mca_compat.h"
+#include "mca_kernels.h"
+#include "memory.h"
+#include "update.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, SMEAN, SEQ, EEQ, LINKS, NKEYWORD };
+const char *const keywords[NKEYWORD] = {"sxx", "syy",   "szz", "sxy", "sxz",
+                                        "syz", "smean", "seq", "eeq", "links"};
+}    // namespace
+
+/* ----------------------------------------------------------------------
+   compute ID group mca/atom keyword ...
+------------------------------------------------------------------------- */
+
+ComputeMCAAtom::ComputeMCAAtom(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), nmax(0), vector(nullptr), array(nullptr), avec(nullptr),
+    links(nullptr)
+{
+  if (narg < 4) utils::missing_cmd_args(FLERR, "compute mca/atom (needs keywords)", error);
+  for (int iarg = 3; iarg < narg; iarg++) {
+    int k = 0;
+    while (k < NKEYWORD && strcmp(arg[iarg], keywords[k]) != 0) k++;
+    if (k == NKEYWORD)
+      error->all(FLERR, "Unknown compute mca/atom keyword {} (allowed: sxx syy szz sxy sxz syz "
+                 "smean seq eeq links)", arg[iarg]);
+    which.push_back(k);
+  }
+  peratom_flag = 1;
+  size_peratom_cols = (which.size() == 1) ? 0 : (int) which.size();
+
+  avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  if (!avec) error->all(FLERR, "Compute mca/atom requires atom_style mca, not {}", atom->atom_style);
+}
+
+/* ---------------------------------------------------------------------- */
+
+ComputeMCAAtom::~ComputeMCAAtom()
+{
+  memory->destroy(vector);
+  memory->destroy(array);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeMCAAtom::init()
+{
+  avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  if (!avec) error->all(FLERR, "Compute mca/atom requires atom_style mca");
+  links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, "MCA_LINKS"));
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeMCAAtom::value(int i, int w)
+{
+  if (w <= SYZ) return avec->stress[i][w];
+  if (w == SMEAN) return avec->smean[i];
+  if (w == SEQ) return avec->seq[i];
+  if (w == EEQ) return avec->eeq[i];
+  // links: linked partners of the automaton
+  if (!links) return 0.0;
+  int n = 0;
+  for (int m = 0; m < links->nlinks[i]; m++)
+    if (static_cast<int>(links->history[i][m * MCAKernels::H_SIZE + MCAKernels::H_STATE]) ==
+        MCAKernels::LINK_LINKED)
+      n++;
+  return n;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeMCAAtom::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(vector);
+    memory->destroy(array);
+    if (size_peratom_cols == 0) {
+      memory->create(vector, nmax, "mca/atom:vector");
+      vector_atom = vector;
+    } else {
+      memory->create(array, nmax, size_peratom_cols, "mca/atom:array");
+      array_atom = array;
+    }
+  }
+
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) {
+    const bool in = mask[i] & groupbit;
+    if (size_peratom_cols == 0)
+      vector[i] = in ? value(i, which[0]) : 0.0;
+    else
+      for (int k = 0; k < size_peratom_cols; k++) array[i][k] = in ? value(i, which[k]) : 0.0;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeMCAAtom::memory_usage()
+{
+  return (double) nmax * MAX(size_peratom_cols, 1) * sizeof(double);
+}

@@ -1,0 +1,273 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "fix_mca_links.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "mca_compat.h"
+#include "mca_kernels.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using namespace MCAKernels;
+
+// per-atom values besides the rows: nlinks, smean_step, smean_law
+static constexpr int NPERATOM = 3;
+
+/* ---------------------------------------------------------------------- */
+
+FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), history(nullptr),
+    smean_step(nullptr), smean_law(nullptr), list(nullptr)
+{
+  if (narg != 3) error->all(FLERR, "Illegal fix MCA_LINKS command (internal fix of pair mca)");
+
+  restart_global = 1;
+  restart_peratom = 1;
+  stores_ids = 1;
+  created = 0;
+  maxlinks = 0;
+  set_capacity(1);
+
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixMCALinks::~FixMCALinks()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+
+  memory->destroy(nlinks);
+  memory->destroy(partner);
+  memory->destroy(history);
+  memory->destroy(smean_step);
+  memory->destroy(smean_law);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixMCALinks::setmask()
+{
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   the links are made once, from an occasional full neighbor list
+------------------------------------------------------------------------- */
+
+void FixMCALinks::init()
+{
+  if (!created) MCACompat::request_full_occasional(neighbor, this, 0);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinks::init_list(int /*id*/, NeighList *ptr)
+{
+  list = ptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+NeighList *FixMCALinks::build_full_list()
+{
+  if (!list) error->all(FLERR, "Fix MCA_LINKS has no neighbor list to make links from");
+  neighbor->build_one(list);
+  return list;
+}
+
+/* ----------------------------------------------------------------------
+   change the number of rows per atom, keeping the existing links
+------------------------------------------------------------------------- */
+
+void FixMCALinks::set_capacity(int capacity)
+{
+  if (capacity == maxlinks) return;
+  const int nmax = atom->nmax;
+  const int nlocal = atom->nlocal;
+  tagint **new_partner = nullptr;
+  double **new_history = nullptr;
+  memory->create(new_partner, nmax, capacity, "mca/links:partner");
+  memory->create(new_history, nmax, capacity * H_SIZE, "mca/links:history");
+  if (partner) {
+    for (int i = 0; i < nlocal; i++) {
+      if (nlinks[i] > capacity)
+        error->one(FLERR, "Cannot reduce the link capacity of pair mca below {} links", nlinks[i]);
+      for (int m = 0; m < nlinks[i]; m++) {
+        new_partner[i][m] = partner[i][m];
+        memcpy(&new_history[i][m * H_SIZE], &history[i][m * H_SIZE], H_SIZE * sizeof(double));
+      }
+    }
+  }
+  memory->destroy(partner);
+  memory->destroy(history);
+  partner = new_partner;
+  history = new_history;
+  maxlinks = capacity;
+  if (!nlinks) {
+    grow_arrays(nmax);
+    for (int i = 0; i < nmax; i++) {
+      nlinks[i] = 0;
+      smean_step[i] = smean_law[i] = 0.0;
+    }
+  }
+
+  // largest record an atom sends when it moves to another processor
+  maxexchange = NPERATOM + maxlinks * (1 + H_SIZE);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixMCALinks::memory_usage()
+{
+  const double nmax = atom->nmax;
+  return nmax * (sizeof(int) + maxlinks * (sizeof(tagint) + H_SIZE * sizeof(double)) +
+                 2.0 * sizeof(double));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinks::grow_arrays(int nmax)
+{
+  memory->grow(nlinks, nmax, "mca/links:nlinks");
+  memory->grow(partner, nmax, maxlinks, "mca/links:partner");
+  memory->grow(history, nmax, maxlinks * H_SIZE, "mca/links:history");
+  memory->grow(smean_step, nmax, "mca/links:smean_step");
+  memory->grow(smean_law, nmax, "mca/links:smean_law");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
+{
+  nlinks[j] = nlinks[i];
+  for (int m = 0; m < nlinks[i]; m++) partner[j][m] = partner[i][m];
+  memcpy(history[j], history[i], nlinks[i] * H_SIZE * sizeof(double));
+  smean_step[j] = smean_step[i];
+  smean_law[j] = smean_law[i];
+}
+
+/* ----------------------------------------------------------------------
+   pack the links of atom i for a move to another processor
+------------------------------------------------------------------------- */
+
+int FixMCALinks::pack_exchange(int i, double *buf)
+{
+  int m = 0;
+  buf[m++] = nlinks[i];
+  buf[m++] = smean_step[i];
+  buf[m++] = smean_law[i];
+  for (int k = 0; k < nlinks[i]; k++) {
+    buf[m++] = ubuf(partner[i][k]).d;
+    memcpy(&buf[m], &history[i][k * H_SIZE], H_SIZE * sizeof(double));
+    m += H_SIZE;
+  }
+  return m;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixMCALinks::unpack_exchange(int nlocal, double *buf)
+{
+  int m = 0;
+  nlinks[nlocal] = static_cast<int>(buf[m++]);
+  smean_step[nlocal] = buf[m++];
+  smean_law[nlocal] = buf[m++];
+  for (int k = 0; k < nlinks[nlocal]; k++) {
+    partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
+    memcpy(&history[nlocal][k * H_SIZE], &buf[m], H_SIZE * sizeof(double));
+    m += H_SIZE;
+  }
+  return m;
+}
+
+/* ----------------------------------------------------------------------
+   global restart data: capacity and whether the links exist
+------------------------------------------------------------------------- */
+
+void FixMCALinks::write_restart(FILE *fp)
+{
+  if (comm->me == 0) {
+    double list[3] = {(double) maxlinks, (double) created, (double) H_SIZE};
+    int size = 3 * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 3, fp);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinks::restart(char *buf)
+{
+  auto list = (double *) buf;
+  if (static_cast<int>(list[2]) != H_SIZE)
+    error->all(FLERR, "Restart file holds MCA links with {} values each, this version uses {}",
+               static_cast<int>(list[2]), static_cast<int>(H_SIZE));
+  set_capacity(static_cast<int>(list[0]));
+  created = static_cast<int>(list[1]);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom restart data; buf[0] is the record length, as other fixes
+   skip records by it
+------------------------------------------------------------------------- */
+
+int FixMCALinks::pack_restart(int i, double *buf)
+{
+  const int n = pack_exchange(i, &buf[1]);
+  buf[0] = n + 1;
+  return n + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinks::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+
+  // skip to the nth record of this atom
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+
+  const int n = static_cast<int>(extra[nlocal][m]);
+  if (n > maxlinks)
+    error->one(FLERR, "Restart file holds {} links for an automaton, more than the capacity {}",
+               n, maxlinks);
+  unpack_exchange(nlocal, &extra[nlocal][m]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixMCALinks::size_restart(int nlocal)
+{
+  return 1 + NPERATOM + nlinks[nlocal] * (1 + H_SIZE);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixMCALinks::maxsize_restart()
+{
+  return 1 + NPERATOM + maxlinks * (1 + H_SIZE);
+}

@@ -1,0 +1,78 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(MCA_LINKS,FixMCALinks);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_MCA_LINKS_H
+#define LMP_FIX_MCA_LINKS_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   internal fix created by pair_style mca: the persistent table of links
+   of each automaton, independent of neighbor lists.  Row m of atom i holds
+   the partner's atom ID and the whole link history (both halves, in the
+   canonical order lower ID first), so the two owners of a link hold
+   identical copies and never need each other's data.  Rows move with their
+   atom between processors and are written to restart files.
+------------------------------------------------------------------------- */
+
+class FixMCALinks : public Fix {
+ public:
+  FixMCALinks(class LAMMPS *, int, char **);
+  ~FixMCALinks() override;
+  int setmask() override;
+  void init() override;
+  void init_list(int, class NeighList *) override;
+
+  double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+
+  // link table, maxlinks rows per atom
+  int maxlinks;       // capacity per automaton
+  int *nlinks;        // number of links of each atom
+  tagint **partner;   // atom ID of the partner of each link
+  double **history;   // H_SIZE doubles per link (see mca_kernels.h)
+
+  // per-automaton history of the mean-stress law (see pair_style mca)
+  double *smean_step;    // mean stress from the tractions at the last step
+  double *smean_law;     // mean stress the normal law used at the last step
+
+  int created;    // 1 once the links have been made (kept in restart files)
+
+  void set_capacity(int);
+  class NeighList *build_full_list();
+
+ private:
+  class NeighList *list;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,92 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(mca,PairMCA);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_MCA_H
+#define LMP_PAIR_MCA_H
+
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairMCA : public Pair {
+ public:
+  PairMCA(class LAMMPS *);
+  ~PairMCA() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void setup() override;
+
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  void *extract(const char *, int &) override;
+  double memory_usage() override;
+
+  // the mean-stress predictor: a separate pass with its own forward
+  // communication, called by compute() (and by the Kokkos variant)
+  void predict_mean_stress();
+
+  double recommended_timestep();
+  class FixMCALinks *links;
+
+ protected:
+  // per type: material
+  double *youngs, *poisson, *density;    // E, nu, rho
+  double *shear, *bulk, *coupling;       // G, K, D = 1 - 2G/(3K)
+  int *material_set;
+  // per type pair: linking rules
+  int **link_allowed;
+  double **link_tolerance;
+
+  double tolerance_default;    // relative distance tolerance for links
+  double cutoff_user;          // pair cutoff given by the user, else < 0
+  int capacity_user;           // links per automaton given by the user, else 0
+  double cut_global;
+
+  // per-atom work arrays (local + ghost)
+  int nmax;
+  double *link_count;    // interacting links of each automaton (communicated)
+  double *dsmean;        // mean-stress increment the normal law applies this step
+  double *smean_pred;    // predicted mean stress of this step
+  int comm_stage;
+  bigint nstretched;    // links longer than the cutoff at the last step
+
+  class AtomVecMCA *avec;
+
+  void allocate();
+  void grow_peratom();
+  void create_links();
+  void count_links();
+  void set_masses();
+  int partner_index(int i, tagint partner_tag);
+  void stretched_warning();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
