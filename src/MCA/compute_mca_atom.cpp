@@ -39,23 +39,25 @@ const char *const keywords[NKEYWORD] = {"sxx", "syy",   "szz", "sxy", "sxz",
 ------------------------------------------------------------------------- */
 
 ComputeMCAAtom::ComputeMCAAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), nmax(0), vector(nullptr), array(nullptr), avec(nullptr),
-    links(nullptr)
+    Compute(lmp, narg, arg), nmax(0), vector(nullptr), array(nullptr), avec(nullptr), links(nullptr)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "compute mca/atom (needs keywords)", error);
   for (int iarg = 3; iarg < narg; iarg++) {
     int k = 0;
     while (k < NKEYWORD && strcmp(arg[iarg], keywords[k]) != 0) k++;
     if (k == NKEYWORD)
-      error->all(FLERR, "Unknown compute mca/atom keyword {} (allowed: sxx syy szz sxy sxz syz "
-                 "smean seq eeq links)", arg[iarg]);
+      error->all(FLERR,
+                 "Unknown compute mca/atom keyword {} (allowed: sxx syy szz sxy sxz syz "
+                 "smean seq eeq links)",
+                 arg[iarg]);
     which.push_back(k);
   }
   peratom_flag = 1;
   size_peratom_cols = (which.size() == 1) ? 0 : (int) which.size();
 
   avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
-  if (!avec) error->all(FLERR, "Compute mca/atom requires atom_style mca, not {}", atom->atom_style);
+  if (!avec)
+    error->all(FLERR, "Compute mca/atom requires atom_style mca, not {}", atom->atom_style);
 }
 
 /* ---------------------------------------------------------------------- */

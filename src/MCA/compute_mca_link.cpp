@@ -49,8 +49,10 @@ ComputeMCALink::ComputeMCALink(LAMMPS *lmp, int narg, char **arg) :
     int k = 0;
     while (k < NKEYWORD && strcmp(arg[iarg], keywords[k]) != 0) k++;
     if (k == NKEYWORD)
-      error->all(FLERR, "Unknown compute mca/link keyword {} (allowed: id1 id2 state length "
-                 "strain normal shear area force energy)", arg[iarg]);
+      error->all(FLERR,
+                 "Unknown compute mca/link keyword {} (allowed: id1 id2 state length "
+                 "strain normal shear area force energy)",
+                 arg[iarg]);
     which.push_back(k);
   }
   local_flag = 1;
@@ -127,8 +129,10 @@ void ComputeMCALink::compute_local()
       const double *h = &links->history[i][m * H_SIZE];
       int j = atom->map(other);
       if (j < 0)
-        error->one(FLERR, "Compute mca/link: partner {} of automaton {} is not a local or ghost "
-                   "atom", other, tag[i]);
+        error->one(FLERR,
+                   "Compute mca/link: partner {} of automaton {} is not a local or ghost "
+                   "atom",
+                   other, tag[i]);
       j = domain->closest_image(i, j);
       const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double r = sqrt(dot3(del, del));
@@ -140,16 +144,36 @@ void ComputeMCALink::compute_local()
       for (int c = 0; c < ncols; c++) {
         double value = 0.0;
         switch (which[c]) {
-          case ID1: value = tag[i]; break;
-          case ID2: value = other; break;
-          case STATE: value = h[H_STATE]; break;
-          case LENGTH: value = r; break;
-          case STRAIN: value = r / h[H_R0] - 1.0; break;
-          case NORMAL: value = sig; break;
-          case SHEAR: value = tau; break;
-          case AREA: value = area; break;
-          case FORCE: value = area * sqrt(sig * sig + tau * tau); break;
-          case ENERGY: value = h[H_WORK]; break;
+          case ID1:
+            value = tag[i];
+            break;
+          case ID2:
+            value = other;
+            break;
+          case STATE:
+            value = h[H_STATE];
+            break;
+          case LENGTH:
+            value = r;
+            break;
+          case STRAIN:
+            value = r / h[H_R0] - 1.0;
+            break;
+          case NORMAL:
+            value = sig;
+            break;
+          case SHEAR:
+            value = tau;
+            break;
+          case AREA:
+            value = area;
+            break;
+          case FORCE:
+            value = area * sqrt(sig * sig + tau * tau);
+            break;
+          case ENERGY:
+            value = h[H_WORK];
+            break;
         }
         if (size_local_cols == 0)
           vlocal[row] = value;

@@ -35,8 +35,8 @@ static constexpr int NPERATOM = 3;
 /* ---------------------------------------------------------------------- */
 
 FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), history(nullptr),
-    smean_step(nullptr), smean_law(nullptr), list(nullptr)
+    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), history(nullptr), smean_step(nullptr),
+    smean_law(nullptr), list(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix MCA_LINKS command (internal fix of pair mca)");
 
@@ -142,8 +142,8 @@ void FixMCALinks::set_capacity(int capacity)
 double FixMCALinks::memory_usage()
 {
   const double nmax = atom->nmax;
-  return nmax * (sizeof(int) + maxlinks * (sizeof(tagint) + H_SIZE * sizeof(double)) +
-                 2.0 * sizeof(double));
+  return nmax *
+      (sizeof(int) + maxlinks * (sizeof(tagint) + H_SIZE * sizeof(double)) + 2.0 * sizeof(double));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -253,8 +253,8 @@ void FixMCALinks::unpack_restart(int nlocal, int nth)
 
   const int n = static_cast<int>(extra[nlocal][m]);
   if (n > maxlinks)
-    error->one(FLERR, "Restart file holds {} links for an automaton, more than the capacity {}",
-               n, maxlinks);
+    error->one(FLERR, "Restart file holds {} links for an automaton, more than the capacity {}", n,
+               maxlinks);
   unpack_exchange(nlocal, &extra[nlocal][m]);
 }
 

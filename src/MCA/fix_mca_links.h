@@ -54,10 +54,10 @@ class FixMCALinks : public Fix {
   int maxsize_restart() override;
 
   // link table, maxlinks rows per atom
-  int maxlinks;       // capacity per automaton
-  int *nlinks;        // number of links of each atom
-  tagint **partner;   // atom ID of the partner of each link
-  double **history;   // H_SIZE doubles per link (see mca_kernels.h)
+  int maxlinks;        // capacity per automaton
+  int *nlinks;         // number of links of each atom
+  tagint **partner;    // atom ID of the partner of each link
+  double **history;    // H_SIZE doubles per link (see mca_kernels.h)
 
   // per-automaton history of the mean-stress law (see pair_style mca)
   double *smean_step;    // mean stress from the tractions at the last step

@@ -18,6 +18,7 @@
 #include "atom.h"
 #include "error.h"
 #include "input.h"
+#include "mca_compat.h"
 #include "memory.h"
 #include "modify.h"
 #include "respa.h"
@@ -40,8 +41,10 @@ FixMCASetVelocity::FixMCASetVelocity(LAMMPS *lmp, int narg, char **arg) :
 {
   if (narg < 6) utils::missing_cmd_args(FLERR, "fix mca/setvelocity (needs vx vy vz)", error);
   if (narg > 6)
-    error->all(FLERR, "Illegal fix mca/setvelocity command: unexpected argument '{}' (arguments "
-               "are vx vy vz, each a number, NULL or v_name)", arg[6]);
+    error->all(FLERR,
+               "Illegal fix mca/setvelocity command: unexpected argument '{}' (arguments "
+               "are vx vy vz, each a number, NULL or v_name)",
+               arg[6]);
 
   vector_flag = 1;
   size_vector = 3;
@@ -96,8 +99,7 @@ void FixMCASetVelocity::init()
     if (!varname[k]) continue;
     ivar[k] = input->variable->find(varname[k]);
     if (ivar[k] < 0)
-      error->all(FLERR, "Fix mca/setvelocity {}: variable {} does not exist", names[k],
-                 varname[k]);
+      error->all(FLERR, "Fix mca/setvelocity {}: variable {} does not exist", names[k], varname[k]);
     if (input->variable->equalstyle(ivar[k]))
       style[k] = EQUAL;
     else if (input->variable->atomstyle(ivar[k]))

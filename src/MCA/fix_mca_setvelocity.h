@@ -38,8 +38,8 @@ class FixMCASetVelocity : public Fix {
 
  protected:
   enum { NONE, CONSTANT, EQUAL, ATOM };
-  int style[3];           // per component: NONE (free), CONSTANT, EQUAL or ATOM variable
-  double value[3];        // constant or current equal-style value
+  int style[3];       // per component: NONE (free), CONSTANT, EQUAL or ATOM variable
+  double value[3];    // constant or current equal-style value
   char *varname[3];
   int ivar[3];
   double reaction[3], reaction_all[3];    // force on the group before it is removed

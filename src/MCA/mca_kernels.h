@@ -156,13 +156,13 @@ namespace MCAKernels {
 
   // layout of the per-link history (doubles); both owners store all of it
   enum LinkHistory {
-    H_STATE = 0,     // link state (LINKED)
-    H_R0,            // reference length r0
-    H_Q0LO,          // reference half lengths
+    H_STATE = 0,    // link state (LINKED)
+    H_R0,           // reference length r0
+    H_Q0LO,         // reference half lengths
     H_Q0HI,
-    H_A0,            // reference contact area
-    H_RPREV,         // length at the last step
-    H_NPREV,         // unit normal lo -> hi at the last step (3)
+    H_A0,                     // reference contact area
+    H_RPREV,                  // length at the last step
+    H_NPREV,                  // unit normal lo -> hi at the last step (3)
     H_APREV = H_NPREV + 3,    // contact area at the last step
     H_WORK,                   // elastic energy of the link
     H_LO,                     // half of lo: sigma, eps, t(3), couple(3)
@@ -254,15 +254,88 @@ namespace MCAKernels {
     return (q0_j * (sig_j - sig_i) + h_j * dr) / (h_i * q0_j + h_j * q0_i);
   }
 
-  /* predicted mean-stress increment from the sum of the predicted strains
-     of the n interacting pairs of an automaton of coordination nc; the
-     nc - n missing neighbours are a free surface (zero traction, 3.92-3.94) */
+  /* ----------------------------------------------------------------------
+     homogenised stress of an automaton from the tractions T_j acting on it
+     through its links j (unit normals n_j pointing to the partners):
+       sigma = sym( B F^-1 ),  B = sum_j T_j n_j^T,  F = sum_j n_j n_j^T
+     For a complete sc or fcc shell F = (N_c/3) I and this is the source's
+     (3/N_c) sum_j (sigma_j n_j n_j + n_j t_j).  The fabric tensor F makes
+     it exact for any uniform stress (T_j = sigma n_j) also where links are
+     missing (free surfaces), where the source's formula counts missing
+     links as tractions of zero.  A tiny multiple of the identity keeps F
+     invertible for links that span less than 3d (isolated pairs, chains);
+     B F^-1 only acts on the span of the links, so this does not bias it.
+     Symmetric 3x3 tensors are stored as xx yy zz xy xz yz.
+  ------------------------------------------------------------------------- */
 
-  MCA_INLINE double predicted_mean_stress_increment(double sum_strain, double G, double K, int nc,
-                                                    int n)
+  MCA_INLINE void fabric_add(double *fab, const double *n)
   {
-    const double divisor = n + (nc - n) * 1.5 * K / G;
-    return 3.0 * K * sum_strain / divisor;
+    fab[0] += n[0] * n[0];
+    fab[1] += n[1] * n[1];
+    fab[2] += n[2] * n[2];
+    fab[3] += n[0] * n[1];
+    fab[4] += n[0] * n[2];
+    fab[5] += n[1] * n[2];
+  }
+
+  // inverse of a symmetric 3x3 tensor regularised by 1e-12 of its trace
+  MCA_INLINE void fabric_inverse(const double *fab, double *inv)
+  {
+    const double reg = 1.0e-12 * (fab[0] + fab[1] + fab[2]);
+    const double a = fab[0] + reg, b = fab[1] + reg, c = fab[2] + reg;
+    const double d = fab[3], e = fab[4], f = fab[5];
+    const double c00 = b * c - f * f, c01 = e * f - d * c, c02 = d * f - b * e;
+    const double det = a * c00 + d * c01 + e * c02;
+    const double idet = (det != 0.0) ? 1.0 / det : 0.0;
+    inv[0] = c00 * idet;
+    inv[1] = (a * c - e * e) * idet;
+    inv[2] = (a * b - d * d) * idet;
+    inv[3] = c01 * idet;
+    inv[4] = c02 * idet;
+    inv[5] = (d * e - a * f) * idet;
+  }
+
+  // B += T n^T (B row-major 3x3)
+  MCA_INLINE void traction_add(double *bmat, const double *trac, const double *n)
+  {
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) bmat[3 * a + b] += trac[a] * n[b];
+  }
+
+  // sigma = sym(B F^-1), Voigt order xx yy zz xy xz yz
+  MCA_INLINE void homogenised_stress(const double *bmat, const double *fab, double *sig)
+  {
+    double inv[6];
+    fabric_inverse(fab, inv);
+    const double fi[9] = {inv[0], inv[3], inv[4], inv[3], inv[1], inv[5], inv[4], inv[5], inv[2]};
+    double s[9];
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++)
+        s[3 * a + b] =
+            bmat[3 * a] * fi[b] + bmat[3 * a + 1] * fi[3 + b] + bmat[3 * a + 2] * fi[6 + b];
+    sig[0] = s[0];
+    sig[1] = s[4];
+    sig[2] = s[8];
+    sig[3] = 0.5 * (s[1] + s[3]);
+    sig[4] = 0.5 * (s[2] + s[6]);
+    sig[5] = 0.5 * (s[5] + s[7]);
+  }
+
+  /* predicted mean-stress increment of an automaton: the mean of the
+     homogenised normal-traction increments 2G de_j + D dsm satisfies
+       dsm = (1/3) sum_j (n_j F^-1 n_j)(2G de_j + D dsm),  sum_j n_j F^-1 n_j = 3
+     so dsm = K tr(F^-1 M), M = sum_j de_j n_j n_j^T (thesis 3.91 for a
+     complete shell; replaces its free-surface correction 3.92-3.95, which
+     belongs to the zero-traction count of missing links)                  */
+
+  MCA_INLINE double predicted_mean_stress_increment(const double *fab, const double *mstrain,
+                                                    double K)
+  {
+    double inv[6];
+    fabric_inverse(fab, inv);
+    const double tr = inv[0] * mstrain[0] + inv[1] * mstrain[1] + inv[2] * mstrain[2] +
+        2.0 * (inv[3] * mstrain[3] + inv[4] * mstrain[4] + inv[5] * mstrain[5]);
+    return K * tr;
   }
 
   /* ----------------------------------------------------------------------
@@ -287,24 +360,34 @@ namespace MCAKernels {
      tangential displacement of the contact point of j relative to that of
      i during a step: the change of the centre-to-centre vector (from the
      positions, so that displacements made between runs count too) minus
-     the part carried by the spins, both normal to the current normal n.
-     Zero for a rigid motion of the pair up to O(angle^3) (thesis 3.107-3.109
-     without the 1/r, there written with the velocities).
+     the part carried by the spins, normal to the current normal n.
+     The spins turn the contact points about the mid-step normal
+     (n_old + n)/|n_old + n|: for a rigid rotation by an angle alpha per
+     step the change of the centre-to-centre vector is exactly
+     2 sin(alpha/2) w x r_mid, so the slip left is O(alpha^3) per step and
+     does not accumulate (with the end-of-step normal it would be
+     O(alpha^2) and grow steadily along an arc).  Thesis 3.107-3.109
+     without the 1/r, there written with velocities.
        del, del_old   centre-to-centre vector now and at the last step
+       n_old          unit normal at the last step
        w_i, w_j       angular velocities over the step (spin increments w dt)
   ------------------------------------------------------------------------- */
 
-  MCA_INLINE void contact_slip(const double *n, const double *del, const double *del_old,
-                               double q_i, double q_j, const double *w_i, const double *w_j,
-                               double dt, double *dl)
+  MCA_INLINE void contact_slip(const double *n, const double *n_old, const double *del,
+                               const double *del_old, double q_i, double q_j, const double *w_i,
+                               const double *w_j, double dt, double *dl)
   {
+    double nm[3] = {n[0] + n_old[0], n[1] + n_old[1], n[2] + n_old[2]};
+    const double len = sqrt(dot3(nm, nm));
+    for (int m = 0; m < 3; m++) nm[m] = (len > 0.0) ? nm[m] / len : n[m];
     const double s[3] = {dt * (q_i * w_i[0] + q_j * w_j[0]), dt * (q_i * w_i[1] + q_j * w_j[1]),
                          dt * (q_i * w_i[2] + q_j * w_j[2])};
     double sxn[3];
-    cross3(s, n, sxn);
-    const double dd[3] = {del[0] - del_old[0], del[1] - del_old[1], del[2] - del_old[2]};
-    const double ddn = dot3(dd, n);
-    for (int m = 0; m < 3; m++) dl[m] = dd[m] - ddn * n[m] - sxn[m];
+    cross3(s, nm, sxn);
+    const double u[3] = {del[0] - del_old[0] - sxn[0], del[1] - del_old[1] - sxn[1],
+                         del[2] - del_old[2] - sxn[2]};
+    const double un = dot3(u, n);
+    for (int m = 0; m < 3; m++) dl[m] = u[m] - un * n[m];
   }
 
   /* ----------------------------------------------------------------------
@@ -327,12 +410,13 @@ namespace MCAKernels {
   /* ----------------------------------------------------------------------
      carry a vector of the pair frame along with the pair: the minimal
      rotation that takes the old normal a to the new normal b, then a twist
-     by angle phi about b; finally the component along b is removed so that
-     shear tractions and couples stay in the tangent plane
-     (only for tangential vectors; the normal component is dropped)
+     by angle phi about b.  A tangential vector (shear traction) also loses
+     the component along b that round-off leaves; a couple keeps its twist
+     component along b.
   ------------------------------------------------------------------------- */
 
-  MCA_INLINE void rotate_tangential(double *v, const double *a, const double *b, double phi)
+  MCA_INLINE void rotate_with_pair(double *v, const double *a, const double *b, double phi,
+                                   bool tangential)
   {
     double k[3];
     cross3(a, b, k);
@@ -343,12 +427,14 @@ namespace MCAKernels {
     const double f = (c > -1.0 + 1.0e-12) ? 1.0 / (1.0 + c) : 0.0;
     for (int m = 0; m < 3; m++) r[m] = v[m] * c + kxv[m] + k[m] * kv * f;
     if (phi != 0.0) {
+      // Rodrigues rotation about the unit vector b
       double bxr[3];
       cross3(b, r, bxr);
+      const double rb = dot3(r, b);
       const double cp = cos(phi), sp = sin(phi);
-      for (int m = 0; m < 3; m++) r[m] = r[m] * cp + bxr[m] * sp;
+      for (int m = 0; m < 3; m++) r[m] = r[m] * cp + bxr[m] * sp + b[m] * rb * (1.0 - cp);
     }
-    const double rb = dot3(r, b);
+    const double rb = tangential ? dot3(r, b) : 0.0;
     for (int m = 0; m < 3; m++) v[m] = r[m] - rb * b[m];
   }
 
@@ -374,17 +460,17 @@ namespace MCAKernels {
           f         force on lo (on hi: -f)
           tq_lo, tq_hi  torques on lo and hi
           sig       normal traction of the pair (for the mean stress)
-          s6        contribution to the stress tensors of both automata,
-                    per unit weight q0 A0 / Omega: sig n n + sym(n t)
+          trac      traction on lo (sig n + t); T n^T is the same for both
+                    automata of the pair
           r, nvec   current length and normal
   ------------------------------------------------------------------------- */
 
   MCA_INLINE void linked_pair(double *hist, const double *x_lo, const double *x_hi,
-                              const double *w_lo, const double *w_hi, double g_lo, double g_hi, double d_lo,
-                              double d_hi, double k_lo, double k_hi, double dsm_lo, double dsm_hi,
-                              double sm_lo, double sm_hi, double chi, double dt, double *f,
-                              double *tq_lo, double *tq_hi, double &sig, double *s6, double &r,
-                              double *nvec)
+                              const double *w_lo, const double *w_hi, double g_lo, double g_hi,
+                              double d_lo, double d_hi, double k_lo, double k_hi, double dsm_lo,
+                              double dsm_hi, double sm_lo, double sm_hi, double chi, double dt,
+                              double *f, double *tq_lo, double *tq_hi, double &sig, double *trac,
+                              double &r, double *nvec)
   {
     double *lo = hist + H_LO;
     double *hi = hist + H_HI;
@@ -399,8 +485,8 @@ namespace MCAKernels {
     // normal tractions
     double de_lo, de_hi;
     const double sig_lo0 = lo[HALF_SIG], sig_hi0 = hi[HALF_SIG];
-    split_normal_strain(sig_lo0, sig_hi0, g_lo, g_hi, d_lo, d_hi, dsm_lo, dsm_hi, q0_lo, q0_hi,
-                        dr, de_lo, de_hi);
+    split_normal_strain(sig_lo0, sig_hi0, g_lo, g_hi, d_lo, d_hi, dsm_lo, dsm_hi, q0_lo, q0_hi, dr,
+                        de_lo, de_hi);
     lo[HALF_EPS] += de_lo;
     hi[HALF_EPS] += de_hi;
     lo[HALF_SIG] = sig_lo0 + 2.0 * g_lo * de_lo + d_lo * dsm_lo;
@@ -418,16 +504,16 @@ namespace MCAKernels {
       t_old[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
       c_old[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
     }
-    rotate_tangential(lo + HALF_T, n_old, n, phi);
-    rotate_tangential(hi + HALF_T, n_old, n, phi);
-    rotate_tangential(lo + HALF_COUPLE, n_old, n, phi);
-    rotate_tangential(hi + HALF_COUPLE, n_old, n, phi);
+    rotate_with_pair(lo + HALF_T, n_old, n, phi, true);
+    rotate_with_pair(hi + HALF_T, n_old, n, phi, true);
+    rotate_with_pair(lo + HALF_COUPLE, n_old, n, phi, false);
+    rotate_with_pair(hi + HALF_COUPLE, n_old, n, phi, false);
 
     // shear tractions
     double dl[3], dg_lo[3], dg_hi[3];
     const double rprev = hist[H_RPREV];
     const double del_old[3] = {rprev * n_old[0], rprev * n_old[1], rprev * n_old[2]};
-    contact_slip(n, del, del_old, q_lo, q_hi, w_lo, w_hi, dt, dl);
+    contact_slip(n, n_old, del, del_old, q_lo, q_hi, w_lo, w_hi, dt, dl);
     split_shear_strain(lo + HALF_T, hi + HALF_T, g_lo, g_hi, q_lo, q_hi, dl, dg_lo, dg_hi);
     for (int m = 0; m < 3; m++) {
       lo[HALF_T + m] += 2.0 * g_lo * dg_lo[m];
@@ -468,13 +554,7 @@ namespace MCAKernels {
       tq_hi[m] = q_hi * nxf[m] - couple[m];
     }
 
-    // stress contribution: sig n n + sym(n t)
-    s6[0] = sig * n[0] * n[0] + n[0] * t[0];
-    s6[1] = sig * n[1] * n[1] + n[1] * t[1];
-    s6[2] = sig * n[2] * n[2] + n[2] * t[2];
-    s6[3] = sig * n[0] * n[1] + 0.5 * (n[0] * t[1] + n[1] * t[0]);
-    s6[4] = sig * n[0] * n[2] + 0.5 * (n[0] * t[2] + n[2] * t[0]);
-    s6[5] = sig * n[1] * n[2] + 0.5 * (n[1] * t[2] + n[2] * t[1]);
+    for (int m = 0; m < 3; m++) trac[m] = sig * n[m] + t[m];
 
     // elastic energy: work of the pair forces over the step, trapezoidal
     // rule with the forces that acted at the last step and now
@@ -482,7 +562,8 @@ namespace MCAKernels {
     const double a_old = hist[H_APREV];
     double work = 0.5 * (a_old * sig_old + area * sig) * dr;
     for (int m = 0; m < 3; m++)
-      work += 0.5 * (a_old * t_old[m] + area * t[m]) * dl[m] + 0.5 * (c_old[m] + couple[m]) * dth[m];
+      work +=
+          0.5 * (a_old * t_old[m] + area * t[m]) * dl[m] + 0.5 * (c_old[m] + couple[m]) * dth[m];
     hist[H_WORK] += work;
 
     hist[H_RPREV] = r;

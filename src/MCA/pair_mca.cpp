@@ -48,10 +48,10 @@ static const char FIX_LINKS_ID[] = "MCA_LINKS";
 /* ---------------------------------------------------------------------- */
 
 PairMCA::PairMCA(LAMMPS *lmp) :
-    Pair(lmp), links(nullptr), youngs(nullptr), poisson(nullptr), density(nullptr),
-    shear(nullptr), bulk(nullptr), coupling(nullptr), material_set(nullptr),
-    link_allowed(nullptr), link_tolerance(nullptr), link_count(nullptr), dsmean(nullptr),
-    smean_pred(nullptr), avec(nullptr)
+    Pair(lmp), links(nullptr), youngs(nullptr), poisson(nullptr), density(nullptr), shear(nullptr),
+    bulk(nullptr), coupling(nullptr), material_set(nullptr), link_allowed(nullptr),
+    link_tolerance(nullptr), link_count(nullptr), dsmean(nullptr), smean_pred(nullptr),
+    avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -92,7 +92,8 @@ PairMCA::~PairMCA()
   memory->destroy(link_count);
   memory->destroy(dsmean);
   memory->destroy(smean_pred);
-  if (modify && MCACompat::fix_by_id(modify, FIX_LINKS_ID)) modify->delete_fix(FIX_LINKS_ID);
+  // the MCA_LINKS fix is kept: a pair_style mca command issued again (e.g.
+  // to change a setting) finds the links and their history; clear removes it
 }
 
 /* ---------------------------------------------------------------------- */
@@ -161,8 +162,10 @@ void PairMCA::settings(int narg, char **arg)
 
 void PairMCA::coeff(int narg, char **arg)
 {
-  if (narg < 3) error->all(FLERR, "Incorrect args for pair coefficients: pair_coeff I J keyword "
-                           "value ... (keywords: E nu rho link tolerance)");
+  if (narg < 3)
+    error->all(FLERR,
+               "Incorrect args for pair coefficients: pair_coeff I J keyword "
+               "value ... (keywords: E nu rho link tolerance)");
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -173,7 +176,8 @@ void PairMCA::coeff(int narg, char **arg)
   int link = -1;
   int iarg = 2;
   while (iarg < narg) {
-    if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, std::string("pair_coeff ") + arg[iarg], error);
+    if (iarg + 2 > narg)
+      utils::missing_cmd_args(FLERR, std::string("pair_coeff ") + arg[iarg], error);
     const std::string key = arg[iarg];
     if (key == "E") {
       e = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -185,8 +189,10 @@ void PairMCA::coeff(int narg, char **arg)
       // the mean-stress term D = 3 nu/(1 + nu) feeds each step's prediction
       // error into the next with factor D; it must stay below 1 in size
       if (nu <= -0.25)
-        error->all(FLERR, "Pair mca: Poisson's ratio nu = {} is not supported: the mean-stress "
-                   "predictor needs nu > -0.25 (|3 nu/(1 + nu)| < 1)", nu);
+        error->all(FLERR,
+                   "Pair mca: Poisson's ratio nu = {} is not supported: the mean-stress "
+                   "predictor needs nu > -0.25 (|3 nu/(1 + nu)| < 1)",
+                   nu);
     } else if (key == "rho") {
       rho = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (rho <= 0.0) error->all(FLERR, "Pair mca: density rho must be > 0, got {}", rho);
@@ -197,8 +203,10 @@ void PairMCA::coeff(int narg, char **arg)
       if (tol < 0.0 || tol >= 0.5)
         error->all(FLERR, "Pair mca: link tolerance must be in [0, 0.5), got {}", tol);
     } else {
-      error->all(FLERR, "Unknown pair_coeff keyword {} for pair mca (allowed: E nu rho link "
-                 "tolerance)", key);
+      error->all(FLERR,
+                 "Unknown pair_coeff keyword {} for pair mca (allowed: E nu rho link "
+                 "tolerance)",
+                 key);
     }
     iarg += 2;
   }
@@ -208,8 +216,10 @@ void PairMCA::coeff(int narg, char **arg)
     if (nmaterial < 3)
       error->all(FLERR, "Pair mca: a material needs all of E, nu and rho in one pair_coeff");
     if (ilo != jlo || ihi != jhi)
-      error->all(FLERR, "Pair mca: E, nu and rho belong to atom types; use them with two equal "
-                 "type ranges (e.g. pair_coeff 1 1 or pair_coeff * *), not {} {}", arg[0], arg[1]);
+      error->all(FLERR,
+                 "Pair mca: E, nu and rho belong to atom types; use them with two equal "
+                 "type ranges (e.g. pair_coeff 1 1 or pair_coeff * *), not {} {}",
+                 arg[0], arg[1]);
     for (int i = ilo; i <= ihi; i++) {
       youngs[i] = e;
       poisson[i] = nu;
@@ -241,22 +251,25 @@ void PairMCA::init_style()
   if (!avec) error->all(FLERR, "Pair style mca requires atom_style mca, not {}", atom->atom_style);
   if (domain->dimension != 3) error->all(FLERR, "Pair style mca requires a 3d simulation");
   if (!comm->ghost_velocity)
-    error->all(FLERR, "Pair style mca requires ghost atoms to carry velocities: use "
+    error->all(FLERR,
+               "Pair style mca requires ghost atoms to carry velocities: use "
                "'comm_modify vel yes'");
   if (atom->map_style == Atom::MAP_NONE)
     error->all(FLERR, "Pair style mca requires an atom map (atom_modify map array or hash)");
 
   for (int i = 1; i <= atom->ntypes; i++)
     if (!material_set[i])
-      error->all(FLERR, "Pair mca: no material (E, nu, rho) for atom type {}: use pair_coeff {} {} "
-                 "E value nu value rho value", i, i, i);
+      error->all(FLERR,
+                 "Pair mca: no material (E, nu, rho) for atom type {}: use pair_coeff {} {} "
+                 "E value nu value rho value",
+                 i, i, i);
 
   // the internal fix that keeps the links; its ID is fixed so that
   // restart files find it again
   links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
   if (!links)
-    links = dynamic_cast<FixMCALinks *>(
-        modify->add_fix(fmt::format("{} all MCA_LINKS", FIX_LINKS_ID)));
+    links =
+        dynamic_cast<FixMCALinks *>(modify->add_fix(fmt::format("{} all MCA_LINKS", FIX_LINKS_ID)));
 
   set_masses();
 
@@ -279,10 +292,13 @@ void PairMCA::init_style()
   // measured stability limit is 0.9 to 1.35 d/(2 c_p) (see doc/src/pair_mca.rst)
   const double dt_limit = recommended_timestep();
   if (comm->me == 0) {
-    utils::logmesg(lmp, "pair mca: time step limit d/(2 c_p) = {:.6g} (smallest, stiffest "
-                   "automaton); recommended time step <= {:.6g}\n", dt_limit, 0.5 * dt_limit);
+    utils::logmesg(lmp,
+                   "pair mca: time step limit d/(2 c_p) = {:.6g} (smallest, stiffest "
+                   "automaton); recommended time step <= {:.6g}\n",
+                   dt_limit, 0.5 * dt_limit);
     if (update->dt > 0.9 * dt_limit)
-      error->warning(FLERR, "Time step {} is at or above the stability limit of pair mca "
+      error->warning(FLERR,
+                     "Time step {} is at or above the stability limit of pair mca "
                      "(about d/(2 c_p) = {:.6g}); the recommended time step is <= {:.6g}",
                      update->dt, dt_limit, 0.5 * dt_limit);
   }
@@ -390,13 +406,15 @@ void PairMCA::create_links()
   if (capacity_user > 0 && nmostall > capacity_user) {
     tagint worst_local = (nmost == nmostall) ? worst : MAXTAGINT, worst_all;
     MPI_Allreduce(&worst_local, &worst_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-    error->all(FLERR, "Pair mca: automaton {} has {} neighbours to link, more than the capacity "
+    error->all(FLERR,
+               "Pair mca: automaton {} has {} neighbours to link, more than the capacity "
                "{} (pair_style mca capacity); reduce the link tolerance or raise the capacity",
                worst_all, nmostall, capacity_user);
   }
   links->set_capacity(capacity_user > 0 ? capacity_user : MAX(nmostall, 1));
 
   bigint nlocal_links = 0;
+  int duplicate = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     int &n = links->nlinks[i];
@@ -404,6 +422,9 @@ void PairMCA::create_links()
     for (int jj = 0; jj < numneigh[i]; jj++) {
       const int j = firstneigh[i][jj] & NEIGHMASK;
       if (!linkable(i, j)) continue;
+      // two images of one partner: the periodic box is too small
+      for (int k = 0; k < n; k++)
+        if (links->partner[i][k] == tag[j]) duplicate = 1;
       const bool ilo = tag[i] < tag[j];
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       double *h = &links->history[i][n * H_SIZE];
@@ -414,8 +435,9 @@ void PairMCA::create_links()
       h[H_R0] = r;
       h[H_Q0LO] = r * radius[lo] / (radius[lo] + radius[hi]);
       h[H_Q0HI] = r * radius[hi] / (radius[lo] + radius[hi]);
-      h[H_A0] = 0.5 * (face_area(packing[lo], radius[lo], avec->volume[lo]) +
-                       face_area(packing[hi], radius[hi], avec->volume[hi]));
+      h[H_A0] = 0.5 *
+          (face_area(packing[lo], radius[lo], avec->volume[lo]) +
+           face_area(packing[hi], radius[hi], avec->volume[hi]));
       h[H_RPREV] = r;
       for (int k = 0; k < 3; k++) h[H_NPREV + k] = del[k] / r;
       h[H_APREV] = h[H_A0];
@@ -424,6 +446,13 @@ void PairMCA::create_links()
     }
     nlocal_links += n;
   }
+  int duplicate_all;
+  MPI_Allreduce(&duplicate, &duplicate_all, 1, MPI_INT, MPI_MAX, world);
+  if (duplicate_all)
+    error->all(FLERR,
+               "Pair mca: an automaton would link to two periodic images of the same "
+               "automaton; every periodic box length must exceed twice the link length "
+               "(2 (1 + tolerance) (R_i + R_j))");
   links->created = 1;
 
   bigint nall_links;
@@ -458,7 +487,8 @@ int PairMCA::partner_index(int i, tagint partner_tag)
 {
   const int j = atom->map(partner_tag);
   if (j < 0)
-    error->one(FLERR, "Pair mca: the link of automaton {} to automaton {} is lost: the partner is "
+    error->one(FLERR,
+               "Pair mca: the link of automaton {} to automaton {} is lost: the partner is "
                "farther than the communication cutoff {} (stretched link, or a deleted automaton); "
                "increase it with comm_modify cutoff or pair_style mca cutoff",
                atom->tag[i], partner_tag, cut_global + neighbor->skin);
@@ -499,6 +529,7 @@ void PairMCA::predict_mean_stress()
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
   const int *packing = avec->packing;
+  const bool setup_pass = (update->setupflag != 0);
 
   for (int i = 0; i < nlocal; i++) {
     const int nlink = links->nlinks[i];
@@ -506,30 +537,50 @@ void PairMCA::predict_mean_stress()
     if (ni == 0 || packing[i] == PACKING_NONE) {
       smean_pred[i] = links->smean_step[i];
       dsmean[i] = smean_pred[i] - links->smean_law[i];
+      if (setup_pass) {
+        smean_pred[i] = links->smean_law[i];
+        dsmean[i] = 0.0;
+      }
       continue;
     }
     const int it = type[i];
     const double hi_i = predictor_stiffness(shear[it], bulk[it], packing[i], ni);
-    double sum = 0.0;
+    double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double mstrain[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     for (int m = 0; m < nlink; m++) {
       const double *h = &links->history[i][m * H_SIZE];
       if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
       const int j = partner_index(i, links->partner[i][m]);
       const int jt = type[j];
-      const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      const double dr = sqrt(dot3(del, del)) - h[H_RPREV];
+      double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double r = sqrt(dot3(del, del));
+      const double dr = r - h[H_RPREV];
       const bool ilo = tag[i] < tag[j];
       const double *half_i = h + (ilo ? H_LO : H_HI);
       const double *half_j = h + (ilo ? H_HI : H_LO);
       const double q0_i = h[ilo ? H_Q0LO : H_Q0HI], q0_j = h[ilo ? H_Q0HI : H_Q0LO];
       const double hi_j =
           predictor_stiffness(shear[jt], bulk[jt], packing[j], static_cast<int>(link_count[j]));
-      sum += predicted_strain(half_i[HALF_SIG], half_j[HALF_SIG], hi_i, hi_j, q0_i, q0_j, dr);
+      const double de =
+          predicted_strain(half_i[HALF_SIG], half_j[HALF_SIG], hi_i, hi_j, q0_i, q0_j, dr);
+      for (int k = 0; k < 3; k++) del[k] /= r;
+      double nn[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      fabric_add(nn, del);
+      for (int k = 0; k < 6; k++) {
+        fab[k] += nn[k];
+        mstrain[k] += de * nn[k];
+      }
     }
-    const double dsm =
-        predicted_mean_stress_increment(sum, shear[it], bulk[it], packing[i], MIN(ni, packing[i]));
-    smean_pred[i] = links->smean_step[i] + dsm;
-    dsmean[i] = smean_pred[i] - links->smean_law[i];
+    const double dsm = predicted_mean_stress_increment(fab, mstrain, bulk[it]);
+    if (setup_pass) {
+      // a setup (or run 0) repeats the last step with only what changed
+      // since: the correction of the last prediction belongs to the next step
+      smean_pred[i] = links->smean_law[i] + dsm;
+      dsmean[i] = dsm;
+    } else {
+      smean_pred[i] = links->smean_step[i] + dsm;
+      dsmean[i] = smean_pred[i] - links->smean_law[i];
+    }
   }
 
   comm_stage = STAGE_MEAN;
@@ -567,10 +618,9 @@ void PairMCA::compute(int eflag, int vflag)
   bigint nlong = 0;
 
   for (int i = 0; i < nlocal; i++) {
-    double stress[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double tr = 0.0;
+    double bmat[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     const int it = type[i];
-    const double volume = avec->volume[i];
 
     for (int m = 0; m < links->nlinks[i]; m++) {
       double *row = &links->history[i][m * H_SIZE];
@@ -582,11 +632,11 @@ void PairMCA::compute(int eflag, int vflag)
       const int tlo = ilo ? it : jt, thi = ilo ? jt : it;
 
       memcpy(hist, row, H_SIZE * sizeof(double));
-      double fpair[3], tq_lo[3], tq_hi[3], s6[6], nvec[3], sig, r;
-      linked_pair(hist, x[lo], x[hi], omega[lo], omega[hi], shear[tlo], shear[thi],
-                  coupling[tlo], coupling[thi], bulk[tlo], bulk[thi], dsmean[lo], dsmean[hi],
-                  smean_pred[lo], smean_pred[hi], face_moment_factor(avec->packing[lo]), dt, fpair,
-                  tq_lo, tq_hi, sig, s6, r, nvec);
+      double fpair[3], tq_lo[3], tq_hi[3], trac[3], nvec[3], sig, r;
+      linked_pair(hist, x[lo], x[hi], omega[lo], omega[hi], shear[tlo], shear[thi], coupling[tlo],
+                  coupling[thi], bulk[tlo], bulk[thi], dsmean[lo], dsmean[hi], smean_pred[lo],
+                  smean_pred[hi], face_moment_factor(avec->packing[lo]), dt, fpair, tq_lo, tq_hi,
+                  sig, trac, r, nvec);
       if (r * r > cutsq_global) nlong++;
 
       // force and torque on i only: its partner's owner computes the same
@@ -598,15 +648,13 @@ void PairMCA::compute(int eflag, int vflag)
         torque[i][k] += tq[k];
       }
 
-      // averaged stress: weight q0 A0 / Omega (= 3/N_c for sc and fcc)
-      const double w = hist[ilo ? H_Q0LO : H_Q0HI] * hist[H_A0] / volume;
-      for (int k = 0; k < 6; k++) stress[k] += w * s6[k];
-      tr += w * sig;
+      // homogenised stress: T n^T is the same seen from lo or hi
+      traction_add(bmat, trac, nvec);
+      fabric_add(fab, nvec);
 
       // this owner's half of the pair's energy and virial
       if (evflag) {
-        const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1],
-                     delz = x[i][2] - x[j][2];
+        const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
         ev_tally_xyz(i, i, nlocal, 0, 0.5 * hist[H_WORK], 0.0, 0.5 * sign * fpair[0],
                      0.5 * sign * fpair[1], 0.5 * sign * fpair[2], delx, dely, delz);
       }
@@ -614,14 +662,15 @@ void PairMCA::compute(int eflag, int vflag)
     }
 
     // per-automaton outputs; the mean stress is tension positive
-    const double smean = tr / 3.0;
+    double stress[6];
+    homogenised_stress(bmat, fab, stress);
+    const double smean = (stress[0] + stress[1] + stress[2]) / 3.0;
     for (int k = 0; k < 6; k++) avec->stress[i][k] = stress[k];
     avec->smean[i] = smean;
     const double sxx = stress[0], syy = stress[1], szz = stress[2];
-    avec->seq[i] = sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
-                               (szz - sxx) * (szz - sxx)) +
-                        3.0 * (stress[3] * stress[3] + stress[4] * stress[4] +
-                               stress[5] * stress[5]));
+    avec->seq[i] = sqrt(
+        0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+        3.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]));
     avec->eeq[i] = avec->seq[i] / (3.0 * shear[it]);
     if (commit) {
       links->smean_step[i] = smean;

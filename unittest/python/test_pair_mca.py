@@ -1,0 +1,481 @@
+"""pair_style mca: the elastic MCA interaction, checked against elasticity theory.
+
+Each test states the physical fact it checks and the reason for its
+tolerance.  Material: aluminium of the thesis, E = 70 GPa, rho = 2700 kg/m^3.
+"""
+
+import math
+import shutil
+
+import numpy as np
+import pytest
+
+from mcatest import ROOT, read_dump, read_thermo, relative_difference
+
+E = 70.0e9
+RHO = 2700.0
+A_FCC = 0.7184
+EXAMPLE = ROOT / "examples" / "tension_cube"
+
+
+def moduli(nu, e=E):
+    g = e / (2 * (1 + nu))
+    k = e / (3 * (1 - 2 * nu))
+    return g, k, k - 2 * g / 3
+
+
+# ---------------------------------------------------------------------------
+# 1. affine deformations reproduce Hooke's law exactly
+
+AFFINE = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        p p p
+lattice         ${lat} 0.7184
+region          box prism 0 4 0 4 0 4 0 0 0
+create_box      1 box
+create_atoms    1 box
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu ${nu} rho 2700
+fix             integrate all nve/mca
+timestep        1.0e-6
+run             0
+variable        e equal 1.0e-7
+variable        L equal ly
+if "${mode} == xx" then "change_box all x scale $(1+v_e) remap"
+if "${mode} == vol" then "change_box all x scale $(1+v_e) y scale $(1+v_e) z scale $(1+v_e) remap"
+if "${mode} == xy" then "change_box all xy delta $(2*v_e*v_L) remap units box"
+compute         s all mca/atom sxx syy szz sxy sxz syz smean
+dump            d all custom 1 stress.dump id c_s[1] c_s[2] c_s[3] c_s[4] c_s[5] c_s[6] c_s[7]
+dump_modify     d sort id format float %.17g
+thermo_style    custom step pe press pxx pyy pzz pxy
+thermo_modify   format float %.17g
+run             0
+"""
+
+STRAINS = {"xx": np.diag([1.0, 0.0, 0.0]), "vol": np.eye(3),
+           "xy": np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])}
+
+
+@pytest.mark.parametrize("lat", ["fcc", "sc"])
+@pytest.mark.parametrize("nu", [0.0, 0.25, 0.3, 0.45])
+@pytest.mark.parametrize("mode", ["xx", "xy", "vol"])
+def test_affine_strain_gives_hooke_stress(build, tmp_path, lat, nu, mode):
+    """A uniform strain of 1e-7 of a periodic lattice gives sigma = 2G eps + lambda tr(eps) I.
+
+    This pins down the corrected equations: D = 1 - 2G/(3K) in the normal
+    law, the Newton-3 splits, the shear increment dl = q_i dg_i + q_j dg_j and
+    the homogenisation.  Every automaton must carry the same stress, the
+    mean stress must be K tr(eps), and the virial pressure must be minus the
+    mean stress.  Tolerance 1e-6 relative to the largest stress component:
+    geometric nonlinearity is of order of the strain, 1e-7.
+    """
+    build.run(AFFINE, tmp_path, variables={"lat": lat, "nu": nu, "mode": mode})
+    g, k, lam = moduli(nu)
+    eps = 1.0e-7 * STRAINS[mode]
+    expected = 2 * g * eps + lam * np.trace(eps) * np.eye(3)
+    s = read_dump(tmp_path / "stress.dump")[-1]
+    got = np.array([s["c_s[1]"], s["c_s[2]"], s["c_s[3]"], s["c_s[4]"], s["c_s[5]"], s["c_s[6]"]]).T
+    voigt = np.array([expected[0, 0], expected[1, 1], expected[2, 2], expected[0, 1],
+                      expected[0, 2], expected[1, 2]])
+    scale = np.max(np.abs(voigt))
+    assert np.max(np.abs(got - voigt)) < 1.0e-6 * scale
+    assert np.max(np.abs(s["c_s[7]"] - k * np.trace(eps))) < 1.0e-6 * scale
+    thermo = read_thermo(tmp_path / "log.lammps")
+    assert abs(thermo["Press"][-1] + k * np.trace(eps)) < 1.0e-6 * scale
+
+
+# ---------------------------------------------------------------------------
+# 2. the thesis verification cube
+
+def run_cube(build, directory, grips, load, n=10, nsteps=2500, nprocs=1):
+    directory.mkdir(parents=True, exist_ok=True)
+    shutil.copy(EXAMPLE / "in.tension_cube", directory)
+    result = build.run((EXAMPLE / "in.tension_cube").read_text(), directory,
+                       variables={"grips": grips, "load": load, "n": n, "nsteps": nsteps},
+                       nprocs=nprocs, name="in.tension_cube")
+    t, strain, stress, lateral = np.loadtxt(directory / f"cube.{grips}.{load}.dat", unpack=True)
+    return result, t, strain, stress, lateral
+
+
+def quasi_static_slope(t, x, y, tstart=0.015):
+    """Slope of y(x) fitted after the smooth start (tau = 5 ms)."""
+    m = t > tstart
+    return np.polyfit(x[m], y[m], 1)[0]
+
+
+def test_cube_with_frictionless_grips_is_in_uniaxial_stress(build, tmp_path):
+    """Thesis cube (4631 automata) pulled with frictionless grips: slope E, lateral ratio nu.
+
+    The grips slide freely sideways, so the state is uniaxial stress: the
+    slope of stress against strain is E and the lateral strain is -nu times
+    the axial strain.  Stress is force / load-bearing area n(n + 1/2) a^2
+    (the links that cross a (001) plane, a^2/8 each).  Tolerances from the
+    issue: 0.5 % on E, 0.01 on nu; measured -0.15 % and 1e-4 (the loading
+    is quasi-static: the smooth start lasts 4 wave transits).
+    """
+    result, t, strain, stress, lateral = run_cube(build, tmp_path, "free", "tension")
+    assert "4631 atoms" in result.stdout
+    e_app = quasi_static_slope(t, strain, stress)
+    nu_app = -quasi_static_slope(t, strain, lateral)
+    print(f"frictionless grips: E_app/E = {e_app / E:.5f}, nu_app = {nu_app:.5f}")
+    assert abs(e_app / E - 1.0) < 0.005
+    assert abs(nu_app - 0.3) < 0.01
+
+
+def test_cube_with_clamped_grips_thesis_setup(build, tmp_path):
+    """The thesis set-up: grips clamped laterally; apparent moduli are reported.
+
+    Clamped grips stop the lateral contraction near the loaded faces, so the
+    apparent tension modulus lies between E and the constrained modulus
+    K + 4G/3 (measured 1.07 E).  In shear the cube also bends, so the
+    apparent shear modulus is below G (measured 0.69 G).  The bounds are the
+    elasticity theory statements; the numbers are printed for the record.
+    """
+    g, k, _ = moduli(0.3)
+    _, t, strain, stress, _ = run_cube(build, tmp_path / "tension", "clamped", "tension")
+    e_app = quasi_static_slope(t, strain, stress)
+    _, t, strain, stress, _ = run_cube(build, tmp_path / "shear", "clamped", "shear")
+    g_app = quasi_static_slope(t, strain, stress)
+    print(f"clamped grips: tension E_app/E = {e_app / E:.4f}, shear G_app/G = {g_app / g:.4f}")
+    assert E < e_app < k + 4 * g / 3
+    assert 0.3 * g < g_app < g
+
+
+SHEAR_BOX = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        p p p
+lattice         fcc 0.7184
+region          box prism 0 4 0 4 0 4 0 0 0
+create_box      1 box
+create_atoms    1 box
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
+fix             integrate all nve/mca
+fix             shear all deform 1 xy erate 1.0e-3 remap v
+timestep        2.0e-5
+variable        strain equal xy/ly
+variable        stress equal -pxy
+variable        time equal time
+fix             out all print 20 "${time} ${strain} ${stress}" file box.shear.dat screen no
+run             2500
+"""
+
+
+def test_shear_modulus_from_simple_shear_of_a_periodic_box(build, tmp_path):
+    """Simple shear of a periodic box (fix deform, velocities remapped): slope G.
+
+    The box is sheared at 1e-3/s from rest, so shear waves ring; a fit over
+    the last 80 % of the run averages them out.  Tolerance 0.5 % (issue);
+    measured 0.01 %.
+    """
+    build.run(SHEAR_BOX, tmp_path)
+    t, strain, stress = np.loadtxt(tmp_path / "box.shear.dat", unpack=True)
+    g, _, _ = moduli(0.3)
+    g_app = quasi_static_slope(t, strain, stress, tstart=0.01)
+    print(f"periodic shear: G_app/G = {g_app / g:.5f}")
+    assert abs(g_app / g - 1.0) < 0.005
+
+
+# ---------------------------------------------------------------------------
+# 3. waves
+
+WAVE = """
+variable        a equal 0.7184
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        p p p
+lattice         fcc $a
+region          box block 0 $(v_m/2) 0 2 0 2
+create_box      1 box
+create_atoms    1 box
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu ${nu} rho 2700
+fix             integrate all nve/mca
+timestep        ${dt}
+run             0
+compute         d all displace/atom
+variable        k equal 2*PI/lx
+variable        u atom 1.0e-6*sin(v_k*x)
+variable        s atom sin(v_k*x)
+if "${pol} == p" then "displace_atoms all move v_u 0 0 units box" &
+  "variable proj atom c_d[1]*v_s" &
+else "displace_atoms all move 0 v_u 0 units box" "variable proj atom c_d[2]*v_s"
+compute         amp all reduce sum v_proj
+variable        time equal time
+fix             out all print 1 "${time} $(2*c_amp/count(all):%.14e)" file wave.dat screen no
+run             ${nsteps}
+"""
+
+
+def wave_speed(build, directory, pol, m, nu=0.3):
+    """Phase speed of a standing wave of m (200) planes per wavelength."""
+    g, k, _ = moduli(nu)
+    c0 = math.sqrt((k + 4 * g / 3) / RHO) if pol == "p" else math.sqrt(g / RHO)
+    lam = m * A_FCC / 2
+    period = lam / c0
+    dt = period / 400.0    # time-step error (omega dt)^2/24 < 1e-5
+    build.run(WAVE, directory, variables={"m": m, "pol": pol, "nu": nu, "dt": dt,
+                                          "nsteps": int(6.6 * period / dt)})
+    t, amp = np.loadtxt(directory / "wave.dat", unpack=True)
+    crossings = [t[i] - amp[i] * (t[i + 1] - t[i]) / (amp[i + 1] - amp[i])
+                 for i in range(len(amp) - 1) if amp[i] * amp[i + 1] < 0]
+    assert len(crossings) >= 8, "the wave did not oscillate"
+    measured = 2.0 * np.mean(np.diff(crossings))
+    return lam / measured / c0 - 1.0
+
+
+def test_wave_speeds_converge_to_the_continuum(build, tmp_path):
+    """P and S waves along [100]: phase speed vs c_p = sqrt((K + 4G/3)/rho), c_s = sqrt(G/rho).
+
+    The dispersion error is printed for 4, 6, 10, 20 and 40 (200) planes of
+    automata per wavelength, and must fall at least 3x per doubling (the
+    lattice is second-order accurate).  The S wave is within 1 % at 10
+    automata per wavelength (measured -0.86 %).  The P wave is not: its
+    mean-stress term averages the volumetric strain over the neighbour shell
+    of each automaton, which softens short waves (-6.1 % at 10, -1.7 % at
+    20, -0.43 % at 40 for nu = 0.3; see pair_mca.rst); it is held to 2 % at
+    20 and 0.5 % at 40.
+    """
+    errors = {}
+    for pol in ("p", "s"):
+        for m in (4, 6, 10, 20, 40):
+            errors[pol, m] = wave_speed(build, tmp_path / f"{pol}{m}", pol, m)
+    for pol in ("p", "s"):
+        print(f"{pol.upper()} wave, c/c0 - 1 at 4, 6, 10, 20, 40 automata per wavelength: " +
+              ", ".join(f"{errors[pol, m]:+.3e}" for m in (4, 6, 10, 20, 40)))
+        for m in (10, 20):
+            assert errors[pol, m] / errors[pol, 2 * m] > 3.0
+    assert abs(errors["s", 10]) < 0.01 and abs(errors["s", 40]) < 0.001
+    assert abs(errors["p", 20]) < 0.02 and abs(errors["p", 40]) < 0.005
+
+
+def test_p_wave_without_mean_stress_coupling_is_a_spring_chain(build, tmp_path):
+    """For nu = 0 (D = 0) a P wave along [100] sees a chain of planes of spacing h = a/2.
+
+    The exact lattice dispersion of such a chain is c/c0 = sin(kh/2)/(kh/2);
+    at 10 planes per wavelength that is -1.64 %.  Tolerance 1e-4 absolute:
+    the period is measured from zero crossings to about 1e-5.
+    """
+    err = wave_speed(build, tmp_path, "p", 10, nu=0.0)
+    x = math.pi / 10
+    assert abs(err - (math.sin(x) / x - 1.0)) < 1.0e-4
+
+
+# ---------------------------------------------------------------------------
+# 4. energy and rigid motion
+
+ENERGY_BAR = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+lattice         fcc 0.7184
+region          box block -1 2 -1 2 -1 51
+create_box      1 box
+region          bar block -0.01 1.01 -0.01 1.01 -0.01 50.01
+create_atoms    1 region bar
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
+variable        L equal 50*0.7184
+variable        vz atom 0.01*cos(PI*z/v_L)
+velocity        all set 0 0 v_vz units box
+variable        wx atom 0.001*sin(id)
+set             group all omega v_wx 0 0
+fix             integrate all nve/mca
+timestep        ${dt}
+compute         p all property/atom inertia omegax omegay omegaz
+variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
+compute         erot all reduce sum v_erot
+compute         ke all ke
+variable        etot equal c_ke+c_erot+pe
+thermo_style    custom step c_ke c_erot pe v_etot
+thermo_modify   format float %.15e norm no
+thermo          ${every}
+run             ${nsteps}
+"""
+
+
+def test_energy_is_conserved_in_elastic_vibration(build, tmp_path):
+    """A free bar (1 x 1 x 50 cells) vibrating in its first longitudinal mode keeps its energy.
+
+    Kinetic + rotational + elastic energy (the work of the link forces,
+    tallied with the incremental law) may not drift: over 10^4 steps at half
+    the stability limit (dt = R/(2 c_p)) it stays within 1e-4 of the
+    start, and the deviation, the O(dt^2) error of velocity Verlet, falls by
+    3 to 5 times when dt is halved.
+    """
+    g, k, _ = moduli(0.3)
+    dt = 0.5 * 0.254 / math.sqrt((k + 4 * g / 3) / RHO)
+    deviation = {}
+    for factor in (1, 2):
+        d = tmp_path / f"dt{factor}"
+        build.run(ENERGY_BAR, d, variables={"dt": dt / factor, "nsteps": 10000 * factor,
+                                            "every": 50 * factor})
+        e = read_thermo(d / "log.lammps")["v_etot"]
+        deviation[factor] = np.max(np.abs(e - e[0])) / e[0]
+    print(f"max |E(t) - E(0)|/E(0): {deviation[1]:.3e} at dt, {deviation[2]:.3e} at dt/2")
+    assert deviation[1] < 1.0e-4
+    assert 3.0 < deviation[1] / deviation[2] < 5.0
+
+
+RIGID = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+lattice         fcc 0.7184
+region          box block -4 7 -4 7 -4 7
+create_box      1 box
+region          body block -0.01 3.01 -0.01 3.01 -0.01 3.01
+create_atoms    1 region body
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
+variable        xc equal $(xcm(all,x))
+variable        yc equal $(xcm(all,y))
+variable        W equal ${omega}
+variable        vx atom ${V}-v_W*(y-v_yc)
+variable        vy atom v_W*(x-v_xc)
+velocity        all set v_vx v_vy 0 units box
+set             group all omega 0 0 ${omega}
+fix             integrate all nve/mca
+timestep        2.0e-5
+compute         p all property/atom inertia omegax omegay omegaz
+variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
+compute         erot all reduce sum v_erot
+compute         ke all ke
+variable        etot equal c_ke+c_erot+pe
+thermo_style    custom step pe v_etot
+thermo_modify   format float %.15e norm no
+thermo          100
+run             ${nsteps}
+write_dump      all custom final.dump id x y z fx fy fz tqx tqy tqz mass modify sort id format float %.17g
+"""
+
+
+def test_rigid_translation_gives_no_forces(build, tmp_path):
+    """A linked cluster moving at constant velocity stays force-free (to round-off)."""
+    build.run(RIGID, tmp_path, variables={"omega": 0.0, "V": 1.0, "nsteps": 2000})
+    s = read_dump(tmp_path / "final.dump")[-1]
+    reference = E * 1.0e-12 * A_FCC ** 2    # force of a strain of 1e-12 on one cell face
+    assert np.max(np.abs([s["fx"], s["fy"], s["fz"]])) < reference
+
+
+def test_rigid_rotation_is_objective(build, tmp_path):
+    """A linked cluster spinning rigidly at 10 rad/s through 2 rad stores no spurious strain.
+
+    Automata turning with the body see no relative slip and no relative
+    rotation, so the only strain is the small centrifugal stretching
+    (rho W^2 L^2 / E ~ 1e-5): the elastic energy stays below 1e-4 of the
+    kinetic energy and does not grow from the first radian to the second,
+    and the total energy is conserved to 1e-6 (the rotation dominates it).
+    Shear history or couples that did not turn with the pairs would act
+    against the rotation and grow with the angle.
+    """
+    build.run(RIGID, tmp_path, variables={"omega": 10.0, "V": 0.0, "nsteps": 10000})
+    thermo = read_thermo(tmp_path / "log.lammps")
+    pe, etot, step = thermo["PotEng"], thermo["v_etot"], thermo["Step"]
+    first, second = step <= 5000, step > 5000
+    print(f"rigid rotation: max PE/E = {pe.max() / etot[0]:.3e}, PE max first/second radian "
+          f"{pe[first].max():.3e}/{pe[second].max():.3e}")
+    assert pe.max() < 1.0e-4 * etot[0]
+    assert pe[second].max() < 1.5 * pe[first].max()
+    assert np.max(np.abs(etot - etot[0])) < 1.0e-6 * etot[0]
+
+
+# ---------------------------------------------------------------------------
+# 5. MPI and restart
+
+@pytest.mark.mpi
+def test_mpi_ranks_agree_on_the_cube(build, tmp_path):
+    """1000 steps of the cube test on 1, 2 and 4 ranks agree to 1e-10 relative."""
+    finals = {}
+    for nprocs in (1, 2, 4):
+        d = tmp_path / f"np{nprocs}"
+        run_cube(build, d, "free", "tension", nsteps=1000, nprocs=nprocs)
+        finals[nprocs] = np.loadtxt(d / "cube.free.tension.dat")[-1]
+    for nprocs in (2, 4):
+        assert relative_difference(finals[1][1:], finals[nprocs][1:]) < 1.0e-10
+
+
+RESTART_RUN = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+lattice         fcc 0.7184
+region          box block -1 5 -1 5 -1 5
+create_box      1 box
+region          body block -0.01 4.01 -0.01 4.01 -0.01 4.01
+create_atoms    1 region body
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
+variable        vz atom 0.01*(z-1.4368)/2.8736
+variable        wx atom 0.01*sin(id)
+velocity        all set 0 0 v_vz units box
+set             group all omega v_wx 0 0
+fix             integrate all nve/mca
+timestep        2.0e-5
+"""
+
+RESTART_CONTINUE = """
+read_restart    half.restart
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
+fix             integrate all nve/mca
+"""
+
+FINAL_DUMP = """
+compute         s all mca/atom sxx syy szz sxy sxz syz smean
+dump            d all custom ${n} final.dump id x y z vx vy vz omegax omegay omegaz &
+                c_s[1] c_s[2] c_s[3] c_s[4] c_s[5] c_s[6] c_s[7]
+dump_modify     d sort id format float %.17g
+thermo_style    custom step pe
+thermo_modify   format float %.17g
+run             ${n}
+"""
+
+
+@pytest.mark.mpi
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_restart_continues_the_run_exactly(build, tmp_path, nprocs):
+    """write_restart/read_restart continues a run bit for bit.
+
+    The links, both halves of their history and the mean-stress history
+    travel with the restart file: a run continued from it equals the same
+    run continued in memory (both start with a setup that recomputes the
+    forces) in every value.  Against one uninterrupted run the split run
+    differs by round-off only: the setup recomputes the forces of the last
+    step from the stored history with other arithmetic; the net force on an
+    automaton is a difference of link forces about 1e6 times larger, so the
+    relative differences are 1e-10 in forces and stay below 1e-6 after 200
+    more steps.
+    """
+    build.run(RESTART_RUN + "run 200\n" + FINAL_DUMP, tmp_path / "memory", nprocs=nprocs,
+              variables={"n": 200})
+    build.run(RESTART_RUN + FINAL_DUMP, tmp_path / "whole", nprocs=nprocs,
+              variables={"n": 400})
+    build.run(RESTART_RUN + "run 200\nwrite_restart half.restart\n", tmp_path / "split",
+              nprocs=nprocs)
+    build.run(RESTART_CONTINUE + FINAL_DUMP, tmp_path / "split", nprocs=nprocs,
+              variables={"n": 200}, name="in.continue")
+    a = read_dump(tmp_path / "memory" / "final.dump")[-1]
+    b = read_dump(tmp_path / "split" / "final.dump")[-1]
+    c = read_dump(tmp_path / "whole" / "final.dump")[-1]
+    assert a["timestep"] == b["timestep"] == c["timestep"] == 400
+    for name in a:
+        if name not in ("timestep", "box"):
+            assert np.array_equal(a[name], b[name]), name
+            assert relative_difference(b[name], c[name]) < 1.0e-6, name
+    pe = [read_thermo(tmp_path / d / "log.lammps")["PotEng"][-1] for d in ("memory", "split")]
+    assert pe[0] == pe[1]
