@@ -25,11 +25,13 @@
 
 #include <cmath>
 
+// internal linkage: the kernels are inlined and never called through the
+// procedure linkage table of the shared library
 #ifndef MCA_INLINE
 #if defined(KOKKOS_INLINE_FUNCTION)
-#define MCA_INLINE KOKKOS_INLINE_FUNCTION
+#define MCA_INLINE static KOKKOS_INLINE_FUNCTION
 #else
-#define MCA_INLINE inline
+#define MCA_INLINE static inline
 #endif
 #endif
 
@@ -415,25 +417,42 @@ namespace MCAKernels {
      component along b.
   ------------------------------------------------------------------------- */
 
-  MCA_INLINE void rotate_with_pair(double *v, const double *a, const double *b, double phi,
-                                   bool tangential)
+  MCA_INLINE void pair_rotation(const double *a, const double *b, double cos_phi, double sin_phi,
+                                double *rot)
   {
+    // minimal rotation a -> b: R v = c v + k x v + k (k.v)/(1 + c), k = a x b
     double k[3];
     cross3(a, b, k);
     const double c = dot3(a, b);
-    double kxv[3], r[3];
-    cross3(k, v, kxv);
-    const double kv = dot3(k, v);
     const double f = (c > -1.0 + 1.0e-12) ? 1.0 / (1.0 + c) : 0.0;
-    for (int m = 0; m < 3; m++) r[m] = v[m] * c + kxv[m] + k[m] * kv * f;
-    if (phi != 0.0) {
-      // Rodrigues rotation about the unit vector b
-      double bxr[3];
-      cross3(b, r, bxr);
-      const double rb = dot3(r, b);
-      const double cp = cos(phi), sp = sin(phi);
-      for (int m = 0; m < 3; m++) r[m] = r[m] * cp + bxr[m] * sp + b[m] * rb * (1.0 - cp);
-    }
+    double rmin[9];
+    rmin[0] = c + f * k[0] * k[0];
+    rmin[1] = -k[2] + f * k[0] * k[1];
+    rmin[2] = k[1] + f * k[0] * k[2];
+    rmin[3] = k[2] + f * k[1] * k[0];
+    rmin[4] = c + f * k[1] * k[1];
+    rmin[5] = -k[0] + f * k[1] * k[2];
+    rmin[6] = -k[1] + f * k[2] * k[0];
+    rmin[7] = k[0] + f * k[2] * k[1];
+    rmin[8] = c + f * k[2] * k[2];
+    // twist about b (Rodrigues): cos I + sin [b]x + (1 - cos) b b^T
+    const double d = 1.0 - cos_phi;
+    const double tw[9] = {cos_phi + d * b[0] * b[0],         -sin_phi * b[2] + d * b[0] * b[1],
+                          sin_phi * b[1] + d * b[0] * b[2],  sin_phi * b[2] + d * b[1] * b[0],
+                          cos_phi + d * b[1] * b[1],         -sin_phi * b[0] + d * b[1] * b[2],
+                          -sin_phi * b[1] + d * b[2] * b[0], sin_phi * b[0] + d * b[2] * b[1],
+                          cos_phi + d * b[2] * b[2]};
+    for (int r = 0; r < 3; r++)
+      for (int q = 0; q < 3; q++)
+        rot[3 * r + q] =
+            tw[3 * r] * rmin[q] + tw[3 * r + 1] * rmin[3 + q] + tw[3 * r + 2] * rmin[6 + q];
+  }
+
+  MCA_INLINE void rotate_with_pair(double *v, const double *rot, const double *b, bool tangential)
+  {
+    double r[3];
+    for (int m = 0; m < 3; m++)
+      r[m] = rot[3 * m] * v[0] + rot[3 * m + 1] * v[1] + rot[3 * m + 2] * v[2];
     const double rb = tangential ? dot3(r, b) : 0.0;
     for (int m = 0; m < 3; m++) v[m] = r[m] - rb * b[m];
   }
@@ -504,10 +523,12 @@ namespace MCAKernels {
       t_old[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
       c_old[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
     }
-    rotate_with_pair(lo + HALF_T, n_old, n, phi, true);
-    rotate_with_pair(hi + HALF_T, n_old, n, phi, true);
-    rotate_with_pair(lo + HALF_COUPLE, n_old, n, phi, false);
-    rotate_with_pair(hi + HALF_COUPLE, n_old, n, phi, false);
+    double rot[9];
+    pair_rotation(n_old, n, cos(phi), sin(phi), rot);
+    rotate_with_pair(lo + HALF_T, rot, n, true);
+    rotate_with_pair(hi + HALF_T, rot, n, true);
+    rotate_with_pair(lo + HALF_COUPLE, rot, n, false);
+    rotate_with_pair(hi + HALF_COUPLE, rot, n, false);
 
     // shear tractions
     double dl[3], dg_lo[3], dg_hi[3];

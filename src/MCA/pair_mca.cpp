@@ -50,8 +50,9 @@ static const char FIX_LINKS_ID[] = "MCA_LINKS";
 PairMCA::PairMCA(LAMMPS *lmp) :
     Pair(lmp), links(nullptr), youngs(nullptr), poisson(nullptr), density(nullptr), shear(nullptr),
     bulk(nullptr), coupling(nullptr), material_set(nullptr), link_allowed(nullptr),
-    link_tolerance(nullptr), link_count(nullptr), dsmean(nullptr), smean_pred(nullptr),
-    avec(nullptr)
+    link_tolerance(nullptr), link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr),
+    smean_pred(nullptr), bmat_atom(nullptr), fabric_atom(nullptr), partner_cache(nullptr),
+    row_cache(nullptr), avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -67,6 +68,8 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   capacity_user = 0;
   cut_global = 0.0;
   nmax = 0;
+  cache_rows = cache_cols = 0;
+  cache_nlocal = -1;
   comm_stage = STAGE_COUNT;
   nstretched = 0;
 }
@@ -90,8 +93,13 @@ PairMCA::~PairMCA()
     memory->destroy(link_tolerance);
   }
   memory->destroy(link_count);
+  memory->destroy(pred_stiffness);
   memory->destroy(dsmean);
   memory->destroy(smean_pred);
+  memory->destroy(bmat_atom);
+  memory->destroy(fabric_atom);
+  memory->destroy(partner_cache);
+  memory->destroy(row_cache);
   // the MCA_LINKS fix is kept: a pair_style mca command issued again (e.g.
   // to change a setting) finds the links and their history; clear removes it
 }
@@ -471,8 +479,14 @@ void PairMCA::grow_peratom()
   if (atom->nmax <= nmax) return;
   nmax = atom->nmax;
   memory->destroy(link_count);
+  memory->destroy(pred_stiffness);
   memory->destroy(dsmean);
   memory->destroy(smean_pred);
+  memory->destroy(bmat_atom);
+  memory->destroy(fabric_atom);
+  memory->create(pred_stiffness, nmax, "pair:pred_stiffness");
+  memory->create(bmat_atom, nmax, 9, "pair:bmat_atom");
+  memory->create(fabric_atom, nmax, 6, "pair:fabric_atom");
   memory->create(link_count, nmax, "pair:link_count");
   memory->create(dsmean, nmax, "pair:dsmean");
   memory->create(smean_pred, nmax, "pair:smean_pred");
@@ -508,6 +522,10 @@ void PairMCA::count_links()
     for (int m = 0; m < links->nlinks[i]; m++)
       if (static_cast<int>(h[m * H_SIZE + H_STATE]) == LINK_LINKED) n++;
     link_count[i] = n;
+    // stiffness of the automaton's halves in the mean-stress predictor
+    const int it = atom->type[i];
+    const int nc = avec->packing[i];
+    pred_stiffness[i] = (nc > 0) ? predictor_stiffness(shear[it], bulk[it], nc, n) : 0.0;
   }
   comm_stage = STAGE_COUNT;
   MCACompat::forward_comm(comm, this);
@@ -544,14 +562,13 @@ void PairMCA::predict_mean_stress()
       continue;
     }
     const int it = type[i];
-    const double hi_i = predictor_stiffness(shear[it], bulk[it], packing[i], ni);
+    const double hi_i = pred_stiffness[i];
     double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double mstrain[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     for (int m = 0; m < nlink; m++) {
       const double *h = &links->history[i][m * H_SIZE];
       if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
-      const int j = partner_index(i, links->partner[i][m]);
-      const int jt = type[j];
+      const int j = partner_cache[i][m];
       double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double r = sqrt(dot3(del, del));
       const double dr = r - h[H_RPREV];
@@ -559,8 +576,7 @@ void PairMCA::predict_mean_stress()
       const double *half_i = h + (ilo ? H_LO : H_HI);
       const double *half_j = h + (ilo ? H_HI : H_LO);
       const double q0_i = h[ilo ? H_Q0LO : H_Q0HI], q0_j = h[ilo ? H_Q0HI : H_Q0LO];
-      const double hi_j =
-          predictor_stiffness(shear[jt], bulk[jt], packing[j], static_cast<int>(link_count[j]));
+      const double hi_j = pred_stiffness[j];
       const double de =
           predicted_strain(half_i[HALF_SIG], half_j[HALF_SIG], hi_i, hi_j, q0_i, q0_j, dr);
       for (int k = 0; k < 3; k++) del[k] /= r;
@@ -595,6 +611,9 @@ void PairMCA::compute(int eflag, int vflag)
   if (!links->created) error->all(FLERR, "Pair mca: compute() before the links were made");
   grow_peratom();
 
+  // local and ghost indices change only when LAMMPS reneighbors
+  if (neighbor->ago == 0 || cache_nlocal != atom->nlocal) build_partner_cache();
+
   // the history advances only in steps of a run, not in its setup, so that
   // a run 0 or a restarted run sees the same state
   const bool commit = (update->setupflag == 0);
@@ -618,52 +637,73 @@ void PairMCA::compute(int eflag, int vflag)
   bigint nlong = 0;
 
   for (int i = 0; i < nlocal; i++) {
-    double bmat[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    const int it = type[i];
+    for (int k = 0; k < 9; k++) bmat_atom[i][k] = 0.0;
+    for (int k = 0; k < 6; k++) fabric_atom[i][k] = 0.0;
+  }
 
+  // each link is evaluated once per processor that owns one of its
+  // automata: by the lower ID when both are local (and both rows are
+  // updated), by each owner when the partner is a ghost atom
+
+  for (int i = 0; i < nlocal; i++) {
     for (int m = 0; m < links->nlinks[i]; m++) {
       double *row = &links->history[i][m * H_SIZE];
       if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
-      const int j = partner_index(i, links->partner[i][m]);
-      const int jt = type[j];
+      const int j = partner_cache[i][m];
+      const bool jlocal = j < nlocal;
       const bool ilo = tag[i] < tag[j];
+      if (jlocal && !ilo) continue;
       const int lo = ilo ? i : j, hi = ilo ? j : i;
-      const int tlo = ilo ? it : jt, thi = ilo ? jt : it;
+      const int tlo = type[lo], thi = type[hi];
 
-      memcpy(hist, row, H_SIZE * sizeof(double));
+      // a step updates the row in place; a setup works on a copy
+      double *h = row;
+      if (!commit) {
+        memcpy(hist, row, H_SIZE * sizeof(double));
+        h = hist;
+      }
       double fpair[3], tq_lo[3], tq_hi[3], trac[3], nvec[3], sig, r;
-      linked_pair(hist, x[lo], x[hi], omega[lo], omega[hi], shear[tlo], shear[thi], coupling[tlo],
+      linked_pair(h, x[lo], x[hi], omega[lo], omega[hi], shear[tlo], shear[thi], coupling[tlo],
                   coupling[thi], bulk[tlo], bulk[thi], dsmean[lo], dsmean[hi], smean_pred[lo],
                   smean_pred[hi], face_moment_factor(avec->packing[lo]), dt, fpair, tq_lo, tq_hi,
                   sig, trac, r, nvec);
-      if (r * r > cutsq_global) nlong++;
+      // counted once per owner: the warning halves the sum
+      if (r * r > cutsq_global) nlong += jlocal ? 2 : 1;
 
-      // force and torque on i only: its partner's owner computes the same
-      // pair for the partner
+      // force on lo is fpair, on hi -fpair; T n^T is the same for both
       const double sign = ilo ? 1.0 : -1.0;
       const double *tq = ilo ? tq_lo : tq_hi;
       for (int k = 0; k < 3; k++) {
         f[i][k] += sign * fpair[k];
         torque[i][k] += tq[k];
       }
+      traction_add(bmat_atom[i], trac, nvec);
+      fabric_add(fabric_atom[i], nvec);
+      if (jlocal) {
+        for (int k = 0; k < 3; k++) {
+          f[j][k] -= fpair[k];
+          torque[j][k] += tq_hi[k];
+        }
+        traction_add(bmat_atom[j], trac, nvec);
+        fabric_add(fabric_atom[j], nvec);
+      }
 
-      // homogenised stress: T n^T is the same seen from lo or hi
-      traction_add(bmat, trac, nvec);
-      fabric_add(fab, nvec);
-
-      // this owner's half of the pair's energy and virial
+      // energy and virial: the whole pair, or this owner's half of it
       if (evflag) {
         const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-        ev_tally_xyz(i, i, nlocal, 0, 0.5 * hist[H_WORK], 0.0, 0.5 * sign * fpair[0],
-                     0.5 * sign * fpair[1], 0.5 * sign * fpair[2], delx, dely, delz);
+        const double share = jlocal ? 1.0 : 0.5;
+        ev_tally_xyz(i, jlocal ? j : i, nlocal, 0, share * h[H_WORK], 0.0, share * sign * fpair[0],
+                     share * sign * fpair[1], share * sign * fpair[2], delx, dely, delz);
       }
-      if (commit) memcpy(row, hist, H_SIZE * sizeof(double));
+      if (commit && jlocal)
+        memcpy(&links->history[j][row_cache[i][m] * H_SIZE], row, H_SIZE * sizeof(double));
     }
+  }
 
+  for (int i = 0; i < nlocal; i++) {
     // per-automaton outputs; the mean stress is tension positive
     double stress[6];
-    homogenised_stress(bmat, fab, stress);
+    homogenised_stress(bmat_atom[i], fabric_atom[i], stress);
     const double smean = (stress[0] + stress[1] + stress[2]) / 3.0;
     for (int k = 0; k < 6; k++) avec->stress[i][k] = stress[k];
     avec->smean[i] = smean;
@@ -671,7 +711,7 @@ void PairMCA::compute(int eflag, int vflag)
     avec->seq[i] = sqrt(
         0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
         3.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]));
-    avec->eeq[i] = avec->seq[i] / (3.0 * shear[it]);
+    avec->eeq[i] = avec->seq[i] / (3.0 * shear[type[i]]);
     if (commit) {
       links->smean_step[i] = smean;
       links->smean_law[i] = smean_pred[i];
@@ -679,22 +719,56 @@ void PairMCA::compute(int eflag, int vflag)
   }
 
   nstretched = nlong;
-  if (commit) stretched_warning();
+  if (neighbor->ago == 0) stretched_warning();
+}
+
+/* ----------------------------------------------------------------------
+   index of every link's partner (closest image) and, for a local partner,
+   the row of the same link in the partner's table
+------------------------------------------------------------------------- */
+
+void PairMCA::build_partner_cache()
+{
+  const int nlocal = atom->nlocal;
+  const tagint *tag = atom->tag;
+  if (cache_rows < atom->nmax || cache_cols < links->maxlinks) {
+    cache_rows = atom->nmax;
+    cache_cols = links->maxlinks;
+    memory->destroy(partner_cache);
+    memory->destroy(row_cache);
+    memory->create(partner_cache, cache_rows, cache_cols, "pair:partner_cache");
+    memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
+  }
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < links->nlinks[i]; m++) {
+      const int j = partner_index(i, links->partner[i][m]);
+      partner_cache[i][m] = j;
+      row_cache[i][m] = -1;
+      if (j < nlocal)
+        for (int k = 0; k < links->nlinks[j]; k++)
+          if (links->partner[j][k] == tag[i]) row_cache[i][m] = k;
+      if (j < nlocal && row_cache[i][m] < 0)
+        error->one(FLERR, "Pair mca: automaton {} is linked to {} but not the other way", tag[i],
+                   tag[j]);
+    }
+  cache_nlocal = nlocal;
 }
 
 /* ----------------------------------------------------------------------
    a link longer than the cutoff still acts (its partner is found through
-   the atom map) but may be lost when it stretches beyond the ghost shell
+   the atom map) but may be lost when it stretches beyond the ghost shell;
+   reported on reneighboring steps (and at setup)
 ------------------------------------------------------------------------- */
 
 void PairMCA::stretched_warning()
 {
-  if (update->ntimestep % 1000 != 0) return;
   bigint nall;
   MPI_Allreduce(&nstretched, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (nall > 0 && comm->me == 0)
-    error->warning(FLERR, "Pair mca: {} links are longer than the cutoff {} at step {}", nall / 2,
-                   cut_global, update->ntimestep);
+    error->warning(FLERR,
+                   "Pair mca: {} links are longer than the cutoff {} at step {}; a link "
+                   "whose partner leaves the ghost atoms stops the run",
+                   nall / 2, cut_global, update->ntimestep);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -703,7 +777,7 @@ int PairMCA::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
 {
   int m = 0;
   if (comm_stage == STAGE_COUNT) {
-    for (int i = 0; i < n; i++) buf[m++] = link_count[list[i]];
+    for (int i = 0; i < n; i++) buf[m++] = pred_stiffness[list[i]];
   } else {
     for (int i = 0; i < n; i++) {
       buf[m++] = dsmean[list[i]];
@@ -720,7 +794,7 @@ void PairMCA::unpack_forward_comm(int n, int first, double *buf)
   int m = 0;
   const int last = first + n;
   if (comm_stage == STAGE_COUNT) {
-    for (int i = first; i < last; i++) link_count[i] = buf[m++];
+    for (int i = first; i < last; i++) pred_stiffness[i] = buf[m++];
   } else {
     for (int i = first; i < last; i++) {
       dsmean[i] = buf[m++];
@@ -825,5 +899,5 @@ void *PairMCA::extract(const char *str, int &dim)
 
 double PairMCA::memory_usage()
 {
-  return 3.0 * nmax * sizeof(double);
+  return (3.0 + 15.0) * nmax * sizeof(double) + 2.0 * cache_rows * cache_cols * sizeof(int);
 }

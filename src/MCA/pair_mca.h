@@ -69,9 +69,15 @@ class PairMCA : public Pair {
 
   // per-atom work arrays (local + ghost)
   int nmax;
-  double *link_count;    // interacting links of each automaton (communicated)
-  double *dsmean;        // mean-stress increment the normal law applies this step
-  double *smean_pred;    // predicted mean stress of this step
+  double *link_count;        // interacting links of each local automaton
+  double *pred_stiffness;    // its stiffness in the mean-stress predictor (communicated)
+  double *dsmean;            // mean-stress increment the normal law applies this step
+  double *smean_pred;        // predicted mean stress of this step
+  double **bmat_atom;        // sum of T n^T of each local automaton
+  double **fabric_atom;      // sum of n n^T of each local automaton
+  int **partner_cache;       // local or ghost index of each link's partner
+  int **row_cache;           // row of the same link in a local partner's table
+  int cache_rows, cache_cols, cache_nlocal;
   int comm_stage;
   bigint nstretched;    // links longer than the cutoff at the last step
 
@@ -81,6 +87,7 @@ class PairMCA : public Pair {
   void grow_peratom();
   void create_links();
   void count_links();
+  void build_partner_cache();
   void set_masses();
   int partner_index(int i, tagint partner_tag);
   void stretched_warning();

@@ -42,6 +42,27 @@ Atoms # mca
 """
 
 
+PAIR = "comm_modify vel yes\npair_style mca\npair_coeff * * E 70e9 nu 0.3 rho 2700\n"
+PAIR_RUN = BOX + PAIR + "run 0\n"
+
+TWO = """
+units           si
+processors      * 1 1
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+region          box block -4 4 -4 4 -4 4 units box
+create_box      1 box
+create_atoms    1 single -0.254 0 0 units box
+create_atoms    1 single 0.254 0 0 units box
+mca_set         all packing fcc radius 0.254
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70e9 nu 0.3 rho 2700
+run             0
+"""
+
+
 def data_case(line):
     """Read a one-atom data file whose Atoms line is `line`."""
     return ("data", DATA_HEADER + line + "\n", """
@@ -91,6 +112,59 @@ CASES = [
     ("mca_set atom style", SPHERE_BOX + "mca_set all density 1\n",
      r"mca_set requires atom_style mca, not sphere"),
     ("mca_set not a number", BOX + "mca_set all density heavy\n", r"heavy"),
+    # pair_style mca
+    ("pair atom style", SPHERE_BOX + "pair_style mca\npair_coeff * * E 1 nu 0.3 rho 1\nrun 0\n",
+     r"Pair style mca requires atom_style mca, not sphere"),
+    ("pair keyword", BOX + "pair_style mca size 2\n", r"Unknown pair_style mca keyword size"),
+    ("pair tolerance", BOX + "pair_style mca tolerance 0.7\n",
+     r"tolerance must be in \[0, 0.5\), got 0.7"),
+    ("pair capacity", BOX + "pair_style mca capacity 0\n", r"capacity must be in \[1, 64\]"),
+    ("pair cutoff", BOX + "pair_style mca cutoff -1\n", r"cutoff must be > 0"),
+    ("pair E", BOX + "pair_style mca\npair_coeff * * E 0 nu 0.3 rho 2700\n",
+     r"Young's modulus E must be > 0"),
+    ("pair nu high", BOX + "pair_style mca\npair_coeff * * E 1e9 nu 0.5 rho 2700\n",
+     r"Poisson's ratio nu must be in \(-1, 0.5\), got 0.5"),
+    ("pair nu low", BOX + "pair_style mca\npair_coeff * * E 1e9 nu -1 rho 2700\n",
+     r"Poisson's ratio nu must be in \(-1, 0.5\)"),
+    ("pair nu predictor", BOX + "pair_style mca\npair_coeff * * E 1e9 nu -0.3 rho 2700\n",
+     r"nu = -0.3 is not supported: the mean-stress predictor needs nu > -0.25"),
+    ("pair rho", BOX + "pair_style mca\npair_coeff * * E 1e9 nu 0.3 rho 0\n",
+     r"density rho must be > 0"),
+    ("pair coeff keyword", BOX + "pair_style mca\npair_coeff * * E 1e9 G 1e9\n",
+     r"Unknown pair_coeff keyword G for pair mca"),
+    ("pair coeff partial", BOX + "pair_style mca\npair_coeff * * E 1e9 nu 0.3\n",
+     r"a material needs all of E, nu and rho"),
+    ("pair coeff ranges", BOX + "pair_style mca\npair_coeff 1 2 E 1e9 nu 0.3 rho 1\n",
+     r"E, nu and rho belong to atom types"),
+    ("pair coeff missing", BOX + "comm_modify vel yes\npair_style mca\n"
+     "pair_coeff 1 1 E 1e9 nu 0.3 rho 1\nrun 0\n",
+     r"All pair coeffs are not set|no material \(E, nu, rho\) for atom type 2"),
+    ("pair ghost velocity", BOX + "pair_style mca\npair_coeff * * E 1e9 nu 0.3 rho 1\nrun 0\n",
+     r"requires ghost atoms to carry velocities: use 'comm_modify vel yes'"),
+    ("pair capacity exceeded", BOX + "comm_modify vel yes\npair_style mca capacity 6\n"
+     "pair_coeff * * E 1e9 nu 0.3 rho 1\nrun 0\n",
+     r"has 12 neighbours to link, more than the capacity 6"),
+    ("pair periodic images", lattice_box("fcc", 0.7184, 1) + PAIR + "run 0\n",
+     r"would link to two periodic images of the same automaton"),
+    # fix mca/setvelocity
+    ("setvel args", PAIR_RUN + "fix 1 all mca/setvelocity 0 0\n", r"mca/setvelocity"),
+    ("setvel extra", PAIR_RUN + "fix 1 all mca/setvelocity 0 0 0 1\n",
+     r"unexpected argument '1'"),
+    ("setvel all NULL", PAIR_RUN + "fix 1 all mca/setvelocity NULL NULL NULL\n",
+     r"all of vx, vy, vz are NULL"),
+    ("setvel variable", PAIR_RUN + "fix 1 all mca/setvelocity v_none 0 0\nrun 0\n",
+     r"vx: variable none does not exist"),
+    ("setvel variable style", PAIR_RUN + "variable s string abc\n"
+     "fix 1 all mca/setvelocity 0 v_s 0\nrun 0\n", r"vy: variable s must be equal- or atom-style"),
+    # computes
+    ("compute atom keyword", PAIR_RUN + "compute 1 all mca/atom stress\n",
+     r"Unknown compute mca/atom keyword stress"),
+    ("compute atom style", SPHERE_BOX + "compute 1 all mca/atom smean\n",
+     r"Compute mca/atom requires atom_style mca, not sphere"),
+    ("compute link keyword", PAIR_RUN + "compute 1 all mca/link length width\n",
+     r"Unknown compute mca/link keyword width"),
+    ("compute link pair", BOX + "pair_style zero 1.0\npair_coeff * *\n"
+     "compute 1 all mca/link length\nrun 0\n", r"Compute mca/link requires pair_style mca"),
     data_case("1 1 1 5 0.5 0 1.0 0 1 1 1") + (r"Invalid packing 5 in Atoms section",),
     data_case("1 1 1 12 0.0 0 1.0 0 1 1 1") + (r"Invalid diameter 0 .*must be > 0",),
     data_case("1 1 1 12 -0.5 0 1.0 0 1 1 1") + (r"Invalid diameter -0.5",),
@@ -127,7 +201,39 @@ def test_bad_input_is_reported(build, tmp_path, case):
 
 @pytest.mark.mpi
 @pytest.mark.parametrize("case", [c for c in CASES if "variable range" in c[0]
-                                  or "radius 0" in c[0]], ids=_case_id)
+                                  or "radius 0" in c[0] or "capacity exceeded" in c[0]],
+                         ids=_case_id)
 def test_bad_input_on_two_ranks_does_not_hang(build, tmp_path, case):
     """An error found by one rank must stop all ranks (collective check)."""
     _run_case(build, tmp_path, case, nprocs=2)
+
+
+def test_time_step_above_the_stability_limit_is_warned(build, tmp_path):
+    """A time step above the stability limit gives a warning with the recommended value."""
+    result = build.run(BOX + PAIR + "timestep 1.0e-3\nrun 0\n", tmp_path)
+    warnings = [line for line in result.stdout.splitlines() if "WARNING" in line]
+    assert any(re.search(r"Time step 0.001 is at or above the stability limit of pair mca .*"
+                         r"the recommended time step is <= 2.149\d*e-05", w) for w in warnings), warnings
+    quiet = build.run(BOX + PAIR + "timestep 2.0e-5\nrun 0\n", tmp_path / "ok")
+    assert "stability limit" not in quiet.stdout.replace("time step limit", "")
+
+
+STRETCH = TWO + "set atom 1 x -3.5\nset atom 2 x 3.5\nrun 0\n"
+
+
+def test_stretched_link_is_reported(build, tmp_path):
+    """A link stretched beyond the cutoff keeps acting and is reported, never dropped."""
+    result = build.run(STRETCH, tmp_path)
+    assert re.search(r"WARNING: Pair mca: 1 links are longer than the cutoff", result.stdout)
+    thermo = result.stdout.split("Step")[-1].split("\n")[1].split()
+    assert float(thermo[2]) > 0.0    # the stretched link stores elastic energy
+
+
+@pytest.mark.mpi
+def test_lost_link_stops_the_run(build, tmp_path):
+    """A link whose partner is not even a ghost atom stops the run with a clear error."""
+    result = build.run(STRETCH, tmp_path, nprocs=2, check=False, timeout=120)
+    assert result.returncode != 0
+    assert re.search(r"ERROR on proc \d: Pair mca: the link of automaton \d to automaton \d is "
+                     r"lost: the partner is farther than the communication cutoff",
+                     result.stdout + result.stderr)
