@@ -21,6 +21,7 @@
 #include "mca_compat.h"
 #include "mca_kernels.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 
 #include <cstring>
@@ -36,7 +37,7 @@ static constexpr int NPERATOM = 3;
 
 FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), history(nullptr), smean_step(nullptr),
-    smean_law(nullptr), list(nullptr)
+    smean_law(nullptr), row_sync(nullptr), lazy_rows(0), list(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix MCA_LINKS command (internal fix of pair mca)");
 
@@ -69,16 +70,40 @@ FixMCALinks::~FixMCALinks()
 
 int FixMCALinks::setmask()
 {
-  return 0;
+  return PRE_EXCHANGE | MIN_PRE_EXCHANGE | POST_RUN;
 }
 
 /* ----------------------------------------------------------------------
-   the links are made once, from an occasional full neighbor list
+   the links are made once, from an occasional full neighbor list.
+   Partner copies may be left behind during a run only if no fix acts at
+   pre-exchange before this one (e.g. fix balance, which moves atoms)
 ------------------------------------------------------------------------- */
 
 void FixMCALinks::init()
 {
   if (!created) MCACompat::request_full_occasional(neighbor, this, 0);
+  lazy_rows = 1;
+  for (int i = 0; i < modify->nfix && modify->fix[i] != this; i++)
+    if (modify->fmask[i] & (PRE_EXCHANGE | MIN_PRE_EXCHANGE)) lazy_rows = 0;
+}
+
+/* ----------------------------------------------------------------------
+   atoms are about to move between processors or be sorted
+------------------------------------------------------------------------- */
+
+void FixMCALinks::pre_exchange()
+{
+  sync_rows();
+}
+
+void FixMCALinks::min_pre_exchange()
+{
+  sync_rows();
+}
+
+void FixMCALinks::post_run()
+{
+  sync_rows();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -208,6 +233,8 @@ int FixMCALinks::unpack_exchange(int nlocal, double *buf)
 
 void FixMCALinks::write_restart(FILE *fp)
 {
+  // every processor comes here before the per-atom records are packed
+  sync_rows();
   if (comm->me == 0) {
     double list[3] = {(double) maxlinks, (double) created, (double) H_SIZE};
     int size = 3 * sizeof(double);

@@ -29,9 +29,25 @@ namespace LAMMPS_NS {
    of each automaton, independent of neighbor lists.  Row m of atom i holds
    the partner's atom ID and the whole link history (both halves, in the
    canonical order lower ID first), so the two owners of a link hold
-   identical copies and never need each other's data.  Rows move with their
+   identical copies and never need each other's data (between the
+   exchanges of atoms: see MCALinkRowSync).  Rows move with their
    atom between processors and are written to restart files.
 ------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   a style that advances a local link in the row of one of its automata
+   only (leaving the partner's copy behind during a run) brings the copies
+   up to date when asked: before atoms move between processors, at the end
+   of a run and before a restart file is written
+------------------------------------------------------------------------- */
+
+class MCALinkRowSync {
+ public:
+  virtual void sync_link_rows() = 0;
+
+ protected:
+  ~MCALinkRowSync() = default;    // not deleted through this interface
+};
 
 class FixMCALinks : public Fix {
  public:
@@ -39,6 +55,9 @@ class FixMCALinks : public Fix {
   ~FixMCALinks() override;
   int setmask() override;
   void init() override;
+  void pre_exchange() override;
+  void min_pre_exchange() override;
+  void post_run() override;
   void init_list(int, class NeighList *) override;
 
   double memory_usage() override;
@@ -64,6 +83,16 @@ class FixMCALinks : public Fix {
   double *smean_law;     // mean stress the normal law used at the last step
 
   int created;    // 1 once the links have been made (kept in restart files)
+
+  // who brings the partner copies up to date (pair mca), and whether it
+  // may leave them behind during this run: not if a fix that acts before
+  // this one at pre-exchange could move atoms first
+  MCALinkRowSync *row_sync;
+  int lazy_rows;
+  void sync_rows()
+  {
+    if (row_sync) row_sync->sync_link_rows();
+  }
 
   void set_capacity(int);
   class NeighList *build_full_list();

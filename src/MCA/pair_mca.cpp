@@ -51,8 +51,8 @@ PairMCA::PairMCA(LAMMPS *lmp) :
     Pair(lmp), links(nullptr), youngs(nullptr), poisson(nullptr), density(nullptr), shear(nullptr),
     bulk(nullptr), coupling(nullptr), material_set(nullptr), link_allowed(nullptr),
     link_tolerance(nullptr), link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr),
-    smean_pred(nullptr), bmat_atom(nullptr), fabric_atom(nullptr), partner_cache(nullptr),
-    row_cache(nullptr), avec(nullptr)
+    smean_pred(nullptr), bmat_atom(nullptr), fabric_atom(nullptr), pred_fabric(nullptr),
+    pred_strain(nullptr), partner_cache(nullptr), row_cache(nullptr), avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -70,6 +70,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   nmax = 0;
   cache_rows = cache_cols = 0;
   cache_nlocal = -1;
+  partner_rows_stale = 0;
   comm_stage = STAGE_COUNT;
   nstretched = 0;
 }
@@ -98,10 +99,14 @@ PairMCA::~PairMCA()
   memory->destroy(smean_pred);
   memory->destroy(bmat_atom);
   memory->destroy(fabric_atom);
+  memory->destroy(pred_fabric);
+  memory->destroy(pred_strain);
   memory->destroy(partner_cache);
   memory->destroy(row_cache);
   // the MCA_LINKS fix is kept: a pair_style mca command issued again (e.g.
   // to change a setting) finds the links and their history; clear removes it
+  auto fix = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
+  if (fix && fix->row_sync == this) fix->row_sync = nullptr;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -278,6 +283,7 @@ void PairMCA::init_style()
   if (!links)
     links =
         dynamic_cast<FixMCALinks *>(modify->add_fix(fmt::format("{} all MCA_LINKS", FIX_LINKS_ID)));
+  links->row_sync = this;
 
   set_masses();
 
@@ -484,7 +490,11 @@ void PairMCA::grow_peratom()
   memory->destroy(smean_pred);
   memory->destroy(bmat_atom);
   memory->destroy(fabric_atom);
+  memory->destroy(pred_fabric);
+  memory->destroy(pred_strain);
   memory->create(pred_stiffness, nmax, "pair:pred_stiffness");
+  memory->create(pred_fabric, nmax, 6, "pair:pred_fabric");
+  memory->create(pred_strain, nmax, 6, "pair:pred_strain");
   memory->create(bmat_atom, nmax, 9, "pair:bmat_atom");
   memory->create(fabric_atom, nmax, 6, "pair:fabric_atom");
   memory->create(link_count, nmax, "pair:link_count");
@@ -516,15 +526,24 @@ int PairMCA::partner_index(int i, tagint partner_tag)
 void PairMCA::count_links()
 {
   const int nlocal = atom->nlocal;
+  const tagint *tag = atom->tag;
+  for (int i = 0; i < nlocal; i++) link_count[i] = 0.0;
+  // a link between local automata is counted from (and current in the row
+  // of) its lower ID
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < links->nlinks[i]; m++) {
+      const int j = partner_cache[i][m];
+      const bool jlocal = j < nlocal;
+      if (jlocal && tag[j] < tag[i]) continue;
+      if (static_cast<int>(links->history[i][m * H_SIZE + H_STATE]) != LINK_LINKED) continue;
+      link_count[i] += 1.0;
+      if (jlocal) link_count[j] += 1.0;
+    }
   for (int i = 0; i < nlocal; i++) {
-    int n = 0;
-    const double *h = links->history[i];
-    for (int m = 0; m < links->nlinks[i]; m++)
-      if (static_cast<int>(h[m * H_SIZE + H_STATE]) == LINK_LINKED) n++;
-    link_count[i] = n;
     // stiffness of the automaton's halves in the mean-stress predictor
     const int it = atom->type[i];
     const int nc = avec->packing[i];
+    const int n = static_cast<int>(link_count[i]);
     pred_stiffness[i] = (nc > 0) ? predictor_stiffness(shear[it], bulk[it], nc, n) : 0.0;
   }
   comm_stage = STAGE_COUNT;
@@ -549,10 +568,46 @@ void PairMCA::predict_mean_stress()
   const int *packing = avec->packing;
   const bool setup_pass = (update->setupflag != 0);
 
+  for (int i = 0; i < nlocal; i++)
+    for (int k = 0; k < 6; k++) pred_fabric[i][k] = pred_strain[i][k] = 0.0;
+
+  // each link once per owner, as in compute(): by the lower ID when both
+  // automata are local, whose row is current
   for (int i = 0; i < nlocal; i++) {
-    const int nlink = links->nlinks[i];
-    const int ni = static_cast<int>(link_count[i]);
-    if (ni == 0 || packing[i] == PACKING_NONE) {
+    for (int m = 0; m < links->nlinks[i]; m++) {
+      const int j = partner_cache[i][m];
+      const bool jlocal = j < nlocal;
+      if (jlocal && tag[j] < tag[i]) continue;
+      const double *h = &links->history[i][m * H_SIZE];
+      if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
+      double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double r = sqrt(dot3(del, del));
+      const double dr = r - h[H_RPREV];
+      const bool ilo = tag[i] < tag[j];
+      const double sig_i = h[(ilo ? H_LO : H_HI) + HALF_SIG];
+      const double sig_j = h[(ilo ? H_HI : H_LO) + HALF_SIG];
+      const double q0_i = h[ilo ? H_Q0LO : H_Q0HI], q0_j = h[ilo ? H_Q0HI : H_Q0LO];
+      const double h_i = pred_stiffness[i], h_j = pred_stiffness[j];
+      for (int k = 0; k < 3; k++) del[k] /= r;
+      double nn[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      fabric_add(nn, del);
+      const double de_i = predicted_strain(sig_i, sig_j, h_i, h_j, q0_i, q0_j, dr);
+      for (int k = 0; k < 6; k++) {
+        pred_fabric[i][k] += nn[k];
+        pred_strain[i][k] += de_i * nn[k];
+      }
+      if (jlocal) {
+        const double de_j = predicted_strain(sig_j, sig_i, h_j, h_i, q0_j, q0_i, dr);
+        for (int k = 0; k < 6; k++) {
+          pred_fabric[j][k] += nn[k];
+          pred_strain[j][k] += de_j * nn[k];
+        }
+      }
+    }
+  }
+
+  for (int i = 0; i < nlocal; i++) {
+    if (link_count[i] == 0.0 || packing[i] == PACKING_NONE) {
       smean_pred[i] = links->smean_step[i];
       dsmean[i] = smean_pred[i] - links->smean_law[i];
       if (setup_pass) {
@@ -561,33 +616,8 @@ void PairMCA::predict_mean_stress()
       }
       continue;
     }
-    const int it = type[i];
-    const double hi_i = pred_stiffness[i];
-    double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double mstrain[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    for (int m = 0; m < nlink; m++) {
-      const double *h = &links->history[i][m * H_SIZE];
-      if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
-      const int j = partner_cache[i][m];
-      double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      const double r = sqrt(dot3(del, del));
-      const double dr = r - h[H_RPREV];
-      const bool ilo = tag[i] < tag[j];
-      const double *half_i = h + (ilo ? H_LO : H_HI);
-      const double *half_j = h + (ilo ? H_HI : H_LO);
-      const double q0_i = h[ilo ? H_Q0LO : H_Q0HI], q0_j = h[ilo ? H_Q0HI : H_Q0LO];
-      const double hi_j = pred_stiffness[j];
-      const double de =
-          predicted_strain(half_i[HALF_SIG], half_j[HALF_SIG], hi_i, hi_j, q0_i, q0_j, dr);
-      for (int k = 0; k < 3; k++) del[k] /= r;
-      double nn[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-      fabric_add(nn, del);
-      for (int k = 0; k < 6; k++) {
-        fab[k] += nn[k];
-        mstrain[k] += de * nn[k];
-      }
-    }
-    const double dsm = predicted_mean_stress_increment(fab, mstrain, bulk[it]);
+    const double dsm =
+        predicted_mean_stress_increment(pred_fabric[i], pred_strain[i], bulk[type[i]]);
     if (setup_pass) {
       // a setup (or run 0) repeats the last step with only what changed
       // since: the correction of the last prediction belongs to the next step
@@ -611,14 +641,26 @@ void PairMCA::compute(int eflag, int vflag)
   if (!links->created) error->all(FLERR, "Pair mca: compute() before the links were made");
   grow_peratom();
 
-  // local and ghost indices change only when LAMMPS reneighbors
-  if (neighbor->ago == 0 || cache_nlocal != atom->nlocal) build_partner_cache();
+  // local and ghost indices change only when LAMMPS reneighbors; the
+  // partner copies were brought up to date before the atoms moved
+  if (neighbor->ago == 0 || cache_nlocal != atom->nlocal) {
+    if (partner_rows_stale)
+      error->one(FLERR, "Pair mca: atoms were reordered while link rows were out of date");
+    build_partner_cache();
+    // link states (and so the predictor stiffness, sent to the ghost
+    // atoms) change only here in the elastic model: a style that breaks
+    // links must count again when it does
+    count_links();
+  }
 
   // the history advances only in steps of a run, not in its setup, so that
   // a run 0 or a restarted run sees the same state
   const bool commit = (update->setupflag == 0);
+  // a step advances a local link only in the row of its lower ID (the
+  // partner's copy follows in sync_link_rows()) unless a fix that runs
+  // before the links fix at pre-exchange could move atoms first
+  const bool lazy = links->lazy_rows && links->row_sync == this;
 
-  count_links();
   predict_mean_stress();
 
   double **x = atom->x;
@@ -695,10 +737,11 @@ void PairMCA::compute(int eflag, int vflag)
         ev_tally_xyz(i, jlocal ? j : i, nlocal, 0, share * h[H_WORK], 0.0, share * sign * fpair[0],
                      share * sign * fpair[1], share * sign * fpair[2], delx, dely, delz);
       }
-      if (commit && jlocal)
+      if (commit && jlocal && !lazy)
         memcpy(&links->history[j][row_cache[i][m] * H_SIZE], row, H_SIZE * sizeof(double));
     }
   }
+  if (commit && lazy) partner_rows_stale = 1;
 
   for (int i = 0; i < nlocal; i++) {
     // per-automaton outputs; the mean stress is tension positive
@@ -720,6 +763,30 @@ void PairMCA::compute(int eflag, int vflag)
 
   nstretched = nlong;
   if (neighbor->ago == 0) stretched_warning();
+}
+
+/* ----------------------------------------------------------------------
+   copy each local link's current row (lower ID) to the partner's row;
+   called by the links fix before atoms move (pre-exchange), at the end of
+   a run and before a restart file is written.  Costs one pass over the
+   links, against a copy per link and step if done in compute()
+------------------------------------------------------------------------- */
+
+void PairMCA::sync_link_rows()
+{
+  if (!partner_rows_stale) return;
+  const int nlocal = atom->nlocal;
+  const tagint *tag = atom->tag;
+  if (cache_nlocal != nlocal)
+    error->one(FLERR, "Pair mca: atoms were reordered while link rows were out of date");
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < links->nlinks[i]; m++) {
+      const int j = partner_cache[i][m];
+      if (j < nlocal && tag[j] < tag[i])
+        memcpy(&links->history[i][m * H_SIZE], &links->history[j][row_cache[i][m] * H_SIZE],
+               H_SIZE * sizeof(double));
+    }
+  partner_rows_stale = 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -899,5 +966,7 @@ void *PairMCA::extract(const char *str, int &dim)
 
 double PairMCA::memory_usage()
 {
-  return (3.0 + 15.0) * nmax * sizeof(double) + 2.0 * cache_rows * cache_cols * sizeof(int);
+  // link_count, pred_stiffness, dsmean, smean_pred, bmat, fabric, pred_fabric, pred_strain
+  return (4.0 + 9.0 + 6.0 + 12.0) * nmax * sizeof(double) +
+      2.0 * cache_rows * cache_cols * sizeof(int);
 }

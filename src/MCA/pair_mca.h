@@ -20,11 +20,12 @@ PairStyle(mca,PairMCA);
 #ifndef LMP_PAIR_MCA_H
 #define LMP_PAIR_MCA_H
 
+#include "fix_mca_links.h"
 #include "pair.h"
 
 namespace LAMMPS_NS {
 
-class PairMCA : public Pair {
+class PairMCA : public Pair, public MCALinkRowSync {
  public:
   PairMCA(class LAMMPS *);
   ~PairMCA() override;
@@ -53,6 +54,10 @@ class PairMCA : public Pair {
   double recommended_timestep();
   class FixMCALinks *links;
 
+  // a link between two local automata is advanced in the row of the
+  // lower ID only; the partner's row is brought up to date on request
+  void sync_link_rows() override;
+
  protected:
   // per type: material
   double *youngs, *poisson, *density;    // E, nu, rho
@@ -75,9 +80,12 @@ class PairMCA : public Pair {
   double *smean_pred;        // predicted mean stress of this step
   double **bmat_atom;        // sum of T n^T of each local automaton
   double **fabric_atom;      // sum of n n^T of each local automaton
+  double **pred_fabric;      // the same, in the predictor
+  double **pred_strain;      // sum of de n n^T of the predicted strains
   int **partner_cache;       // local or ghost index of each link's partner
   int **row_cache;           // row of the same link in a local partner's table
   int cache_rows, cache_cols, cache_nlocal;
+  int partner_rows_stale;    // rows of local links behind their partner's copy
   int comm_stage;
   bigint nstretched;    // links longer than the cutoff at the last step
 

@@ -602,3 +602,71 @@ def test_links_migrate_between_ranks(build, tmp_path):
                 assert diff < 1.0e-6 * np.max(np.abs(ref)), name
     # the cluster flew once around the box and still vibrates as one body
     assert np.max(np.abs(finals[1]["c_s[7]"])) > 1.0e4
+
+
+def migrate_final(build, directory, script, nprocs):
+    build.run(script, directory, nprocs=nprocs)
+    first, last = read_dump(directory / "states.dump")[:2]
+    order = np.lexsort(np.round([first["z"], first["y"], first["x"]], 6))
+    return last["timestep"], {name: last[name][order] for name in last
+                              if name not in ("timestep", "box", "id")}
+
+
+def assert_same_flight(a, b):
+    """The tolerances of test_links_migrate_between_ranks (round-off)."""
+    scales = {"x": 8.6208, "y": 8.6208, "z": 8.6208, "vx": 100.0}
+    for name, ref in a.items():
+        diff = np.max(np.abs(ref - b[name]))
+        assert diff < (1.0e-10 * scales[name] if name in scales else
+                       1.0e-6 * np.max(np.abs(ref))), name
+
+
+@pytest.mark.mpi
+def test_links_migrate_with_load_balancing_and_restart_files(build, tmp_path):
+    """The flight of test_links_migrate_between_ranks on 2 ranks, three ways.
+
+    A link between two local automata is advanced in the row of the lower ID
+    only; the other copy is brought up to date before atoms move, at the end
+    of a run and when a restart file is written.  (1) With fix balance rcb,
+    which moves atoms at pre-exchange before the links fix can act, both
+    copies are advanced every step instead (without that fallback this run
+    stops with "atoms were reordered while link rows were out of date"); (2) a restart file written in the middle
+    of the run (restart command) and read back continues the flight.  Both
+    agree with the plain run to round-off.
+    """
+    _, plain = migrate_final(build, tmp_path / "plain", MIGRATE, 2)
+    # recursive bisection with weights that change in time: fix balance
+    # itself sends automata to other ranks (irregular communication)
+    balanced = MIGRATE.replace("processors      * 1 1\n", "comm_style      tiled\n").replace(
+        "fix             integrate all nve/mca\n",
+        "variable        wt atom 1.0+0.9*sin(0.01*step+2*x)\n"
+        "fix             bal all balance 100 1.0 rcb weight var wt\n"
+        "fix             integrate all nve/mca\n")
+    assert balanced.count("rcb") == 1 and "tiled" in balanced
+    _, other = migrate_final(build, tmp_path / "balance", balanced, 2)
+    assert_same_flight(plain, other)
+    log = (tmp_path / "balance" / "log.lammps").read_text()
+
+    # a restart file every 1500 steps; continue from the one at step 1500
+    with_restart = MIGRATE.replace("run             3000\n",
+                                   "restart         1500 flight.*.restart\nrun             3000\n")
+    build.run(with_restart, tmp_path / "restart", nprocs=2)
+    assert (tmp_path / "restart" / "flight.1500.restart").exists()
+    cont = ("read_restart    flight.1500.restart\n" +
+            MIGRATE[MIGRATE.index("pair_style"):MIGRATE.index("variable        vx")] +
+            "fix             integrate all nve/mca\n" +
+            MIGRATE[MIGRATE.index("compute         s all"):].replace("run             3000",
+                                                                    "run             1500"))
+    build.run(cont, tmp_path / "restart", nprocs=2, name="in.continue")
+    # the continued run's dump has its first snapshot at 1500: match by the
+    # positions of the plain run's first snapshot instead
+    first_plain = read_dump(tmp_path / "plain" / "states.dump")[0]
+    order_plain = np.lexsort(np.round([first_plain["z"], first_plain["y"], first_plain["x"]], 6))
+    last = read_dump(tmp_path / "restart" / "states.dump")[-1]
+    assert last["timestep"] == 3000
+    ids = first_plain["id"][order_plain]
+    index = {int(t): k for k, t in enumerate(last["id"])}
+    rows = [index[int(t)] for t in ids]
+    continued = {name: last[name][rows] for name in plain}
+    assert_same_flight(plain, continued)
+    assert "balance" in log
