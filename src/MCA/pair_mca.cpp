@@ -51,8 +51,8 @@ PairMCA::PairMCA(LAMMPS *lmp) :
     Pair(lmp), links(nullptr), youngs(nullptr), poisson(nullptr), density(nullptr), shear(nullptr),
     bulk(nullptr), coupling(nullptr), material_set(nullptr), link_allowed(nullptr),
     link_tolerance(nullptr), link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr),
-    smean_pred(nullptr), bmat_atom(nullptr), fabric_atom(nullptr), pred_fabric(nullptr),
-    pred_strain(nullptr), partner_cache(nullptr), row_cache(nullptr), avec(nullptr)
+    smean_pred(nullptr), bmat_atom(nullptr), fabric_atom(nullptr), pred_strain(nullptr),
+    partner_cache(nullptr), row_cache(nullptr), avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -93,14 +93,7 @@ PairMCA::~PairMCA()
     memory->destroy(link_allowed);
     memory->destroy(link_tolerance);
   }
-  memory->destroy(link_count);
-  memory->destroy(pred_stiffness);
-  memory->destroy(dsmean);
-  memory->destroy(smean_pred);
-  memory->destroy(bmat_atom);
-  memory->destroy(fabric_atom);
-  memory->destroy(pred_fabric);
-  memory->destroy(pred_strain);
+  destroy_peratom();
   memory->destroy(partner_cache);
   memory->destroy(row_cache);
   // the MCA_LINKS fix is kept: a pair_style mca command issued again (e.g.
@@ -484,22 +477,25 @@ void PairMCA::grow_peratom()
 {
   if (atom->nmax <= nmax) return;
   nmax = atom->nmax;
+  destroy_peratom();
+  memory->create(pred_stiffness, nmax, "pair:pred_stiffness");
+  memory->create(fabric_atom, nmax, 6, "pair:fabric_atom");
+  memory->create(pred_strain, nmax, 6, "pair:pred_strain");
+  memory->create(bmat_atom, nmax, 9, "pair:bmat_atom");
+  memory->create(link_count, nmax, "pair:link_count");
+  memory->create(dsmean, nmax, "pair:dsmean");
+  memory->create(smean_pred, nmax, "pair:smean_pred");
+}
+
+void PairMCA::destroy_peratom()
+{
   memory->destroy(link_count);
   memory->destroy(pred_stiffness);
   memory->destroy(dsmean);
   memory->destroy(smean_pred);
   memory->destroy(bmat_atom);
   memory->destroy(fabric_atom);
-  memory->destroy(pred_fabric);
   memory->destroy(pred_strain);
-  memory->create(pred_stiffness, nmax, "pair:pred_stiffness");
-  memory->create(pred_fabric, nmax, 6, "pair:pred_fabric");
-  memory->create(pred_strain, nmax, 6, "pair:pred_strain");
-  memory->create(bmat_atom, nmax, 9, "pair:bmat_atom");
-  memory->create(fabric_atom, nmax, 6, "pair:fabric_atom");
-  memory->create(link_count, nmax, "pair:link_count");
-  memory->create(dsmean, nmax, "pair:dsmean");
-  memory->create(smean_pred, nmax, "pair:smean_pred");
 }
 
 /* ----------------------------------------------------------------------
@@ -569,7 +565,7 @@ void PairMCA::predict_mean_stress()
   const bool setup_pass = (update->setupflag != 0);
 
   for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < 6; k++) pred_fabric[i][k] = pred_strain[i][k] = 0.0;
+    for (int k = 0; k < 6; k++) fabric_atom[i][k] = pred_strain[i][k] = 0.0;
 
   // each link once per owner, as in compute(): by the lower ID when both
   // automata are local, whose row is current
@@ -593,13 +589,13 @@ void PairMCA::predict_mean_stress()
       fabric_add(nn, del);
       const double de_i = predicted_strain(sig_i, sig_j, h_i, h_j, q0_i, q0_j, dr);
       for (int k = 0; k < 6; k++) {
-        pred_fabric[i][k] += nn[k];
+        fabric_atom[i][k] += nn[k];
         pred_strain[i][k] += de_i * nn[k];
       }
       if (jlocal) {
         const double de_j = predicted_strain(sig_j, sig_i, h_j, h_i, q0_j, q0_i, dr);
         for (int k = 0; k < 6; k++) {
-          pred_fabric[j][k] += nn[k];
+          fabric_atom[j][k] += nn[k];
           pred_strain[j][k] += de_j * nn[k];
         }
       }
@@ -617,7 +613,7 @@ void PairMCA::predict_mean_stress()
       continue;
     }
     const double dsm =
-        predicted_mean_stress_increment(pred_fabric[i], pred_strain[i], bulk[type[i]]);
+        predicted_mean_stress_increment(fabric_atom[i], pred_strain[i], bulk[type[i]]);
     if (setup_pass) {
       // a setup (or run 0) repeats the last step with only what changed
       // since: the correction of the last prediction belongs to the next step
@@ -680,7 +676,6 @@ void PairMCA::compute(int eflag, int vflag)
 
   for (int i = 0; i < nlocal; i++) {
     for (int k = 0; k < 9; k++) bmat_atom[i][k] = 0.0;
-    for (int k = 0; k < 6; k++) fabric_atom[i][k] = 0.0;
   }
 
   // each link is evaluated once per processor that owns one of its
@@ -720,14 +715,12 @@ void PairMCA::compute(int eflag, int vflag)
         torque[i][k] += tq[k];
       }
       traction_add(bmat_atom[i], trac, nvec);
-      fabric_add(fabric_atom[i], nvec);
       if (jlocal) {
         for (int k = 0; k < 3; k++) {
           f[j][k] -= fpair[k];
           torque[j][k] += tq_hi[k];
         }
         traction_add(bmat_atom[j], trac, nvec);
-        fabric_add(fabric_atom[j], nvec);
       }
 
       // energy and virial: the whole pair, or this owner's half of it
@@ -966,7 +959,7 @@ void *PairMCA::extract(const char *str, int &dim)
 
 double PairMCA::memory_usage()
 {
-  // link_count, pred_stiffness, dsmean, smean_pred, bmat, fabric, pred_fabric, pred_strain
-  return (4.0 + 9.0 + 6.0 + 12.0) * nmax * sizeof(double) +
+  // link_count, pred_stiffness, dsmean, smean_pred, bmat, fabric, pred_strain
+  return (4.0 + 9.0 + 6.0 + 6.0) * nmax * sizeof(double) +
       2.0 * cache_rows * cache_cols * sizeof(int);
 }

@@ -79,12 +79,13 @@ class PairMCA : public Pair, public MCALinkRowSync {
   double *dsmean;            // mean-stress increment the normal law applies this step
   double *smean_pred;        // predicted mean stress of this step
   double **bmat_atom;        // sum of T n^T of each local automaton
-  double **fabric_atom;      // sum of n n^T of each local automaton
-  double **pred_fabric;      // the same, in the predictor
+  double **fabric_atom;      // sum of n n^T of each local automaton at the current
+                             // positions: made by the predictor, used by the stress too
   double **pred_strain;      // sum of de n n^T of the predicted strains
   int **partner_cache;       // local or ghost index of each link's partner
   int **row_cache;           // row of the same link in a local partner's table
   int cache_rows, cache_cols, cache_nlocal;
+  void destroy_peratom();
   int partner_rows_stale;    // rows of local links behind their partner's copy
   int comm_stage;
   bigint nstretched;    // links longer than the cutoff at the last step
