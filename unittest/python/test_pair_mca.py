@@ -5,7 +5,6 @@ tolerance.  Material: aluminium of the thesis, E = 70 GPa, rho = 2700 kg/m^3.
 """
 
 import math
-import shutil
 
 import numpy as np
 import pytest
@@ -15,7 +14,14 @@ from mcatest import ROOT, read_dump, read_thermo, relative_difference
 E = 70.0e9
 RHO = 2700.0
 A_FCC = 0.7184
-EXAMPLE = ROOT / "examples" / "tension_cube"
+EXAMPLES = ROOT / "examples"
+
+
+def run_example(build, directory, example, script, variables=None, nprocs=1):
+    """Run the input examples/<example>/<script> in directory: the tests
+    check the scenes of the examples, not copies of them."""
+    text = (EXAMPLES / example / script).read_text()
+    return build.run(text, directory, variables=variables, nprocs=nprocs, name=script)
 
 
 def moduli(nu, e=E):
@@ -91,11 +97,9 @@ def test_affine_strain_gives_hooke_stress(build, tmp_path, lat, nu, mode):
 # 2. the thesis verification cube
 
 def run_cube(build, directory, grips, load, n=10, nsteps=2500, nprocs=1):
-    directory.mkdir(parents=True, exist_ok=True)
-    shutil.copy(EXAMPLE / "in.tension_cube", directory)
-    result = build.run((EXAMPLE / "in.tension_cube").read_text(), directory,
-                       variables={"grips": grips, "load": load, "n": n, "nsteps": nsteps},
-                       nprocs=nprocs, name="in.tension_cube")
+    result = run_example(build, directory, "tension_cube", "in.tension_cube",
+                         variables={"grips": grips, "load": load, "n": n, "nsteps": nsteps},
+                         nprocs=nprocs)
     t, strain, stress, lateral = np.loadtxt(directory / f"cube.{grips}.{load}.dat", unpack=True)
     return result, t, strain, stress, lateral
 
@@ -144,29 +148,6 @@ def test_cube_with_clamped_grips_thesis_setup(build, tmp_path):
     assert 0.3 * g < g_app < g
 
 
-SHEAR_BOX = """
-units           si
-atom_style      mca
-atom_modify     map array
-boundary        p p p
-lattice         fcc 0.7184
-region          box prism 0 4 0 4 0 4 0 0 0
-create_box      1 box
-create_atoms    1 box
-comm_modify     vel yes
-pair_style      mca
-pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
-fix             integrate all nve/mca
-fix             shear all deform 1 xy erate 1.0e-3 remap v
-timestep        2.0e-5
-variable        strain equal xy/ly
-variable        stress equal -pxy
-variable        time equal time
-fix             out all print 20 "${time} ${strain} ${stress}" file box.shear.dat screen no
-run             2500
-"""
-
-
 def test_shear_modulus_from_simple_shear_of_a_periodic_box(build, tmp_path):
     """Simple shear of a periodic box (fix deform, velocities remapped): slope G.
 
@@ -174,7 +155,7 @@ def test_shear_modulus_from_simple_shear_of_a_periodic_box(build, tmp_path):
     the last 80 % of the run averages them out.  Tolerance 0.5 % (issue);
     measured 0.01 %.
     """
-    build.run(SHEAR_BOX, tmp_path)
+    run_example(build, tmp_path, "tension_cube", "in.shear_box")
     t, strain, stress = np.loadtxt(tmp_path / "box.shear.dat", unpack=True)
     g, _, _ = moduli(0.3)
     g_app = quasi_static_slope(t, strain, stress, tstart=0.01)
@@ -185,46 +166,15 @@ def test_shear_modulus_from_simple_shear_of_a_periodic_box(build, tmp_path):
 # ---------------------------------------------------------------------------
 # 3. waves
 
-WAVE = """
-variable        a equal 0.7184
-units           si
-atom_style      mca
-atom_modify     map array
-boundary        p p p
-lattice         fcc $a
-region          box block 0 $(v_m/2) 0 2 0 2
-create_box      1 box
-create_atoms    1 box
-comm_modify     vel yes
-pair_style      mca
-pair_coeff      * * E 70.0e9 nu ${nu} rho 2700
-fix             integrate all nve/mca
-timestep        ${dt}
-run             0
-compute         d all displace/atom
-variable        k equal 2*PI/lx
-variable        u atom 1.0e-6*sin(v_k*x)
-variable        s atom sin(v_k*x)
-if "${pol} == p" then "displace_atoms all move v_u 0 0 units box" &
-  "variable proj atom c_d[1]*v_s" &
-else "displace_atoms all move 0 v_u 0 units box" "variable proj atom c_d[2]*v_s"
-compute         amp all reduce sum v_proj
-variable        time equal time
-fix             out all print 1 "${time} $(2*c_amp/count(all):%.14e)" file wave.dat screen no
-run             ${nsteps}
-"""
-
-
 def wave_speed(build, directory, pol, m, nu=0.3):
     """Phase speed of a standing wave of m (200) planes per wavelength."""
     g, k, _ = moduli(nu)
     c0 = math.sqrt((k + 4 * g / 3) / RHO) if pol == "p" else math.sqrt(g / RHO)
     lam = m * A_FCC / 2
-    period = lam / c0
-    dt = period / 400.0    # time-step error (omega dt)^2/24 < 1e-5
-    build.run(WAVE, directory, variables={"m": m, "pol": pol, "nu": nu, "dt": dt,
-                                          "nsteps": int(6.6 * period / dt)})
-    t, amp = np.loadtxt(directory / "wave.dat", unpack=True)
+    # examples/waves/in.wave: 400 steps per period (time-step error
+    # (omega dt)^2/24 < 1e-5), 6.6 periods
+    run_example(build, directory, "waves", "in.wave", variables={"m": m, "pol": pol, "nu": nu})
+    t, amp = np.loadtxt(directory / f"wave.{pol}.{m}.dat", unpack=True)
     crossings = [t[i] - amp[i] * (t[i + 1] - t[i]) / (amp[i + 1] - amp[i])
                  for i in range(len(amp) - 1) if amp[i] * amp[i + 1] < 0]
     assert len(crossings) >= 8, "the wave did not oscillate"
@@ -272,38 +222,6 @@ def test_p_wave_without_mean_stress_coupling_is_a_spring_chain(build, tmp_path):
 # ---------------------------------------------------------------------------
 # 4. energy and rigid motion
 
-ENERGY_BAR = """
-units           si
-atom_style      mca
-atom_modify     map array
-boundary        f f f
-lattice         fcc 0.7184
-region          box block -1 2 -1 2 -1 51
-create_box      1 box
-region          bar block -0.01 1.01 -0.01 1.01 -0.01 50.01
-create_atoms    1 region bar
-comm_modify     vel yes
-pair_style      mca
-pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
-variable        L equal 50*0.7184
-variable        vz atom 0.01*cos(PI*z/v_L)
-velocity        all set 0 0 v_vz units box
-variable        wx atom 0.001*sin(id)
-set             group all omega v_wx 0 0
-fix             integrate all nve/mca
-timestep        ${dt}
-compute         p all property/atom inertia omegax omegay omegaz
-variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
-compute         erot all reduce sum v_erot
-compute         ke all ke
-variable        etot equal c_ke+c_erot+pe
-thermo_style    custom step c_ke c_erot pe v_etot
-thermo_modify   format float %.15e norm no
-thermo          ${every}
-run             ${nsteps}
-"""
-
-
 def test_energy_is_conserved_in_elastic_vibration(build, tmp_path):
     """A free bar (1 x 1 x 50 cells) vibrating in its first longitudinal mode keeps its energy.
 
@@ -313,58 +231,22 @@ def test_energy_is_conserved_in_elastic_vibration(build, tmp_path):
     start, and the deviation, the O(dt^2) error of velocity Verlet, falls by
     3 to 5 times when dt is halved.
     """
-    g, k, _ = moduli(0.3)
-    dt = 0.5 * 0.254 / math.sqrt((k + 4 * g / 3) / RHO)
     deviation = {}
     for factor in (1, 2):
+        # examples/energy/in.energy: dt = R/(2 c_p)/factor, 10^4 factor steps
         d = tmp_path / f"dt{factor}"
-        build.run(ENERGY_BAR, d, variables={"dt": dt / factor, "nsteps": 10000 * factor,
-                                            "every": 50 * factor})
-        e = read_thermo(d / "log.lammps")["v_etot"]
+        run_example(build, d, "energy", "in.energy", variables={"factor": factor})
+        e = np.loadtxt(d / f"energy.{factor}.dat", unpack=True)[4]
         deviation[factor] = np.max(np.abs(e - e[0])) / e[0]
     print(f"max |E(t) - E(0)|/E(0): {deviation[1]:.3e} at dt, {deviation[2]:.3e} at dt/2")
     assert deviation[1] < 1.0e-4
     assert 3.0 < deviation[1] / deviation[2] < 5.0
 
 
-RIGID = """
-units           si
-atom_style      mca
-atom_modify     map array
-boundary        f f f
-lattice         fcc 0.7184
-region          box block -4 7 -4 7 -4 7
-create_box      1 box
-region          body block -0.01 3.01 -0.01 3.01 -0.01 3.01
-create_atoms    1 region body
-comm_modify     vel yes
-pair_style      mca
-pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
-variable        xc equal $(xcm(all,x))
-variable        yc equal $(xcm(all,y))
-variable        W equal ${omega}
-variable        vx atom ${V}-v_W*(y-v_yc)
-variable        vy atom v_W*(x-v_xc)
-velocity        all set v_vx v_vy 0 units box
-set             group all omega 0 0 ${omega}
-fix             integrate all nve/mca
-timestep        2.0e-5
-compute         p all property/atom inertia omegax omegay omegaz
-variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
-compute         erot all reduce sum v_erot
-compute         ke all ke
-variable        etot equal c_ke+c_erot+pe
-thermo_style    custom step pe v_etot
-thermo_modify   format float %.15e norm no
-thermo          100
-run             ${nsteps}
-write_dump      all custom final.dump id x y z fx fy fz tqx tqy tqz mass modify sort id format float %.17g
-"""
-
-
 def test_rigid_translation_gives_no_forces(build, tmp_path):
     """A linked cluster moving at constant velocity stays force-free (to round-off)."""
-    build.run(RIGID, tmp_path, variables={"omega": 0.0, "V": 1.0, "nsteps": 2000})
+    run_example(build, tmp_path, "energy", "in.rigid",
+                variables={"omega": 0.0, "V": 1.0, "nsteps": 2000})
     s = read_dump(tmp_path / "final.dump")[-1]
     reference = E * 1.0e-12 * A_FCC ** 2    # force of a strain of 1e-12 on one cell face
     assert np.max(np.abs([s["fx"], s["fy"], s["fz"]])) < reference
@@ -381,10 +263,10 @@ def test_rigid_rotation_is_objective(build, tmp_path):
     Shear history or couples that did not turn with the pairs would act
     against the rotation and grow with the angle.
     """
-    build.run(RIGID, tmp_path, variables={"omega": 10.0, "V": 0.0, "nsteps": 10000})
-    thermo = read_thermo(tmp_path / "log.lammps")
-    pe, etot, step = thermo["PotEng"], thermo["v_etot"], thermo["Step"]
-    first, second = step <= 5000, step > 5000
+    run_example(build, tmp_path, "energy", "in.rigid",
+                variables={"omega": 10.0, "V": 0.0, "nsteps": 10000})
+    t, pe, etot = np.loadtxt(tmp_path / "rigid.dat", unpack=True)
+    first, second = t <= 0.1, t > 0.1    # 1 rad at 10 rad/s
     print(f"rigid rotation: max PE/E = {pe.max() / etot[0]:.3e}, PE max first/second radian "
           f"{pe[first].max():.3e}/{pe[second].max():.3e}")
     assert pe.max() < 1.0e-4 * etot[0]
