@@ -25,13 +25,56 @@ AtomStyle(mca,AtomVecMCA);
 
 namespace LAMMPS_NS {
 
-class AtomVecMCA : public AtomVec {
+/* ----------------------------------------------------------------------
+   the MCA per-automaton data as the other MCA styles see it, whichever
+   atom style holds it (atom_style mca, or mca/kk of the KOKKOS package):
+   host pointers, valid after sync_host(); a style that changes them on
+   the host says so with modified_host()
+------------------------------------------------------------------------- */
+
+class MCAAtomFields {
  public:
   // columns of the per-automaton stress tensor (Voigt order)
   enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, NSTRESS };
 
-  AtomVecMCA(class LAMMPS *);
-  ~AtomVecMCA() override;
+  double *radius, *rmass;
+  double **omega, **quat;
+
+  int *packing;       // coordination number N_c of the virtual cell: 0, 6 or 12
+  double *volume;     // volume Omega of the virtual cell
+  double *inertia;    // moment of inertia J (isotropic)
+  double *smean;      // mean stress (tension positive)
+  double **stress;    // averaged stress tensor, Voigt order xx yy zz xy xz yz
+  double *seq;        // von Mises equivalent stress
+  double *eeq;        // equivalent strain
+  double *epsp;       // accumulated equivalent plastic strain
+  double *damage;     // damage 0 (intact) ... 1 (all links broken)
+
+  // set the derived geometry (volume, inertia) of automaton i from its
+  // packing, radius and mass; shared with the mca_set command
+  virtual void derive_geometry(int i, bool keep_volume, bool keep_inertia) = 0;
+
+  // the host copy of all per-atom data is current / was changed on the host
+  virtual void sync_host() {}
+  virtual void modified_host() {}
+
+  // the MCA atom style of this system (also inside atom_style hybrid), or nullptr
+  static MCAAtomFields *find(class Atom *atom);
+
+ protected:
+  MCAAtomFields();
+  ~MCAAtomFields() = default;    // owned and deleted as an AtomVec
+};
+
+/* ----------------------------------------------------------------------
+   atom_style mca, written once for both AtomVec bases: AtomVec (this
+   style) and AtomVecKokkos (mca/kk); see atom_vec_mca_impl.h
+------------------------------------------------------------------------- */
+
+template <class AtomVecBase> class AtomVecMCAStyle : public AtomVecBase, public MCAAtomFields {
+ public:
+  AtomVecMCAStyle(class LAMMPS *);
+  ~AtomVecMCAStyle() override;
 
   void process_args(int, char **) override;
   void init() override;
@@ -47,28 +90,20 @@ class AtomVecMCA : public AtomVec {
   int property_atom(MCACompat::property_name_t) override;
   void pack_property_atom(int, double *, int, int) override;
 
-  // set the derived geometry (volume, inertia) of automaton i from its
-  // packing, radius and mass; shared with the mca_set command
-  void derive_geometry(int i, bool keep_volume, bool keep_inertia);
+  void derive_geometry(int i, bool keep_volume, bool keep_inertia) override;
 
-  // per-automaton data: the common sphere fields live in Atom, the MCA
-  // fields are owned here and registered with Atom under "mca_*" names
+ protected:
+  using AtomVecBase::atom;
+  using AtomVecBase::domain;
+  using AtomVecBase::error;
+  using AtomVecBase::memory;
 
-  double *radius, *rmass;
-  double **omega, **quat;
-
-  int *packing;       // coordination number N_c of the virtual cell: 0, 6 or 12
-  double *volume;     // volume Omega of the virtual cell
-  double *inertia;    // moment of inertia J (isotropic)
-  double *smean;      // mean stress (tension positive)
-  double **stress;    // averaged stress tensor, Voigt order xx yy zz xy xz yz
-  double *seq;        // von Mises equivalent stress
-  double *eeq;        // equivalent strain
-  double *epsp;       // accumulated equivalent plastic strain
-  double *damage;     // damage 0 (intact) ... 1 (all links broken)
+  int *num_bond, **nspecial;
+  // 1 if this class allocates the MCA arrays itself (the Kokkos style
+  // keeps them in its own views)
+  int owns_arrays;
 
  private:
-  int *num_bond, **nspecial;
   double radius_one;
 
   // cached geometry of the lattice last used by create_atoms
@@ -78,6 +113,11 @@ class AtomVecMCA : public AtomVec {
   double lattice_radius;
 
   void lattice_geometry(int &, double &);
+};
+
+class AtomVecMCA : public AtomVecMCAStyle<AtomVec> {
+ public:
+  AtomVecMCA(class LAMMPS *lmp) : AtomVecMCAStyle<AtomVec>(lmp) {}
 };
 
 }    // namespace LAMMPS_NS

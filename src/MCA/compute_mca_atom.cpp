@@ -55,7 +55,7 @@ ComputeMCAAtom::ComputeMCAAtom(LAMMPS *lmp, int narg, char **arg) :
   peratom_flag = 1;
   size_peratom_cols = (which.size() == 1) ? 0 : (int) which.size();
 
-  avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  avec = MCAAtomFields::find(atom);
   if (!avec)
     error->all(FLERR, "Compute mca/atom requires atom_style mca, not {}", atom->atom_style);
 }
@@ -72,7 +72,7 @@ ComputeMCAAtom::~ComputeMCAAtom()
 
 void ComputeMCAAtom::init()
 {
-  avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  avec = MCAAtomFields::find(atom);
   if (!avec) error->all(FLERR, "Compute mca/atom requires atom_style mca");
   links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, "MCA_LINKS"));
 }

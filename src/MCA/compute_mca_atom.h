@@ -39,7 +39,7 @@ class ComputeMCAAtom : public Compute {
   int nmax;
   double *vector;
   double **array;
-  class AtomVecMCA *avec;
+  class MCAAtomFields *avec;
   class FixMCALinks *links;
   double value(int i, int w);
 };

@@ -16,6 +16,7 @@
 #include "compute_mca_link.h"
 
 #include "atom.h"
+#include "atom_vec_mca.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_mca_links.h"
@@ -58,7 +59,7 @@ ComputeMCALink::ComputeMCALink(LAMMPS *lmp, int narg, char **arg) :
   local_flag = 1;
   size_local_rows = 0;
   size_local_cols = (which.size() == 1) ? 0 : (int) which.size();
-  if (!atom->style_match("mca"))
+  if (!MCAAtomFields::find(atom))
     error->all(FLERR, "Compute mca/link requires atom_style mca, not {}", atom->atom_style);
 }
 
@@ -82,6 +83,7 @@ void ComputeMCALink::init()
 
 int ComputeMCALink::count_rows()
 {
+  links->to_host();
   const tagint *tag = atom->tag;
   int n = 0;
   for (int i = 0; i < atom->nlocal; i++) {

@@ -24,7 +24,9 @@
 #include "modify.h"
 #include "neighbor.h"
 
+#include <algorithm>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -94,16 +96,19 @@ void FixMCALinks::init()
 void FixMCALinks::pre_exchange()
 {
   sync_rows();
+  to_host();
+  host_changed();    // by the exchange and sorting of atoms that follow
 }
 
 void FixMCALinks::min_pre_exchange()
 {
-  sync_rows();
+  pre_exchange();
 }
 
 void FixMCALinks::post_run()
 {
   sync_rows();
+  to_host();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -129,37 +134,52 @@ NeighList *FixMCALinks::build_full_list()
 void FixMCALinks::set_capacity(int capacity)
 {
   if (capacity == maxlinks) return;
-  const int nmax = atom->nmax;
+  to_host();
   const int nlocal = atom->nlocal;
-  tagint **new_partner = nullptr;
-  double **new_history = nullptr;
-  memory->create(new_partner, nmax, capacity, "mca/links:partner");
-  memory->create(new_history, nmax, capacity * H_SIZE, "mca/links:history");
+
+  // keep the links of the local atoms while the rows are reallocated
+  std::vector<tagint> kept_partner;
+  std::vector<double> kept_history;
   if (partner) {
     for (int i = 0; i < nlocal; i++) {
       if (nlinks[i] > capacity)
         error->one(FLERR, "Cannot reduce the link capacity of pair mca below {} links", nlinks[i]);
-      for (int m = 0; m < nlinks[i]; m++) {
-        new_partner[i][m] = partner[i][m];
-        memcpy(&new_history[i][m * H_SIZE], &history[i][m * H_SIZE], H_SIZE * sizeof(double));
-      }
+      kept_partner.insert(kept_partner.end(), partner[i], partner[i] + nlinks[i]);
+      kept_history.insert(kept_history.end(), history[i], history[i] + nlinks[i] * H_SIZE);
     }
   }
-  memory->destroy(partner);
-  memory->destroy(history);
-  partner = new_partner;
-  history = new_history;
   maxlinks = capacity;
+  allocate_rows(atom->nmax);
   if (!nlinks) {
-    grow_arrays(nmax);
-    for (int i = 0; i < nmax; i++) {
+    grow_arrays(atom->nmax);
+    for (int i = 0; i < atom->nmax; i++) {
       nlinks[i] = 0;
       smean_step[i] = smean_law[i] = 0.0;
     }
   }
+  size_t p = 0, h = 0;
+  for (int i = 0; i < nlocal && !kept_partner.empty(); i++) {
+    std::copy(kept_partner.data() + p, kept_partner.data() + p + nlinks[i], partner[i]);
+    std::copy(kept_history.data() + h, kept_history.data() + h + nlinks[i] * H_SIZE, history[i]);
+    p += nlinks[i];
+    h += nlinks[i] * H_SIZE;
+  }
+  host_changed();
 
   // largest record an atom sends when it moves to another processor
   maxexchange = NPERATOM + maxlinks * (1 + H_SIZE);
+}
+
+/* ----------------------------------------------------------------------
+   new, empty rows of maxlinks links for nmax atoms
+------------------------------------------------------------------------- */
+
+void FixMCALinks::allocate_rows(int nmax)
+{
+  memory->destroy(partner);
+  memory->destroy(history);
+  memory->create(partner, nmax, maxlinks, "mca/links:partner");
+  memory->create(history, nmax, maxlinks * H_SIZE, "mca/links:history");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -186,11 +206,13 @@ void FixMCALinks::grow_arrays(int nmax)
 
 void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
 {
+  to_host();
   nlinks[j] = nlinks[i];
   for (int m = 0; m < nlinks[i]; m++) partner[j][m] = partner[i][m];
   memcpy(history[j], history[i], nlinks[i] * H_SIZE * sizeof(double));
   smean_step[j] = smean_step[i];
   smean_law[j] = smean_law[i];
+  host_changed();
 }
 
 /* ----------------------------------------------------------------------
@@ -199,6 +221,7 @@ void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
 
 int FixMCALinks::pack_exchange(int i, double *buf)
 {
+  to_host();
   int m = 0;
   buf[m++] = nlinks[i];
   buf[m++] = smean_step[i];
@@ -215,6 +238,7 @@ int FixMCALinks::pack_exchange(int i, double *buf)
 
 int FixMCALinks::unpack_exchange(int nlocal, double *buf)
 {
+  to_host();
   int m = 0;
   nlinks[nlocal] = static_cast<int>(buf[m++]);
   smean_step[nlocal] = buf[m++];
@@ -224,6 +248,7 @@ int FixMCALinks::unpack_exchange(int nlocal, double *buf)
     memcpy(&history[nlocal][k * H_SIZE], &buf[m], H_SIZE * sizeof(double));
     m += H_SIZE;
   }
+  host_changed();
   return m;
 }
 
@@ -235,6 +260,7 @@ void FixMCALinks::write_restart(FILE *fp)
 {
   // every processor comes here before the per-atom records are packed
   sync_rows();
+  to_host();
   if (comm->me == 0) {
     double list[3] = {(double) maxlinks, (double) created, (double) H_SIZE};
     int size = 3 * sizeof(double);
@@ -289,6 +315,7 @@ void FixMCALinks::unpack_restart(int nlocal, int nth)
 
 int FixMCALinks::size_restart(int nlocal)
 {
+  to_host();
   return 1 + NPERATOM + nlinks[nlocal] * (1 + H_SIZE);
 }
 

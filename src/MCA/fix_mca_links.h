@@ -97,6 +97,14 @@ class FixMCALinks : public Fix {
   void set_capacity(int);
   class NeighList *build_full_list();
 
+  // the host copy of the table is current / was changed on the host (the
+  // Kokkos variant keeps the table in DualViews; here both do nothing)
+  virtual void to_host() {}
+  virtual void host_changed() {}
+
+ protected:
+  virtual void allocate_rows(int nmax);
+
  private:
   class NeighList *list;
 };

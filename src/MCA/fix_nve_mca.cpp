@@ -36,7 +36,7 @@ FixNVEMCA::FixNVEMCA(LAMMPS *lmp, int narg, char **arg) : FixNVE(lmp, narg, arg)
                "(fix nve/mca takes no keywords)",
                arg[3]);
 
-  avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  avec = MCAAtomFields::find(atom);
   if (!avec)
     error->all(FLERR, "Fix nve/mca requires atom_style mca, not atom_style {}", atom->atom_style);
   if (domain->dimension != 3)
@@ -52,7 +52,7 @@ void FixNVEMCA::init()
   FixNVE::init();
 
   // the style may have been replaced since the fix was defined
-  avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  avec = MCAAtomFields::find(atom);
   if (!avec) error->all(FLERR, "Fix nve/mca requires atom_style mca");
 
   const int *mask = atom->mask;

@@ -33,7 +33,7 @@ class FixNVEMCA : public FixNVE {
   void final_integrate() override;
 
  protected:
-  class AtomVecMCA *avec;
+  class MCAAtomFields *avec;
 };
 
 }    // namespace LAMMPS_NS

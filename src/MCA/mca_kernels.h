@@ -341,6 +341,84 @@ namespace MCAKernels {
   }
 
   /* ----------------------------------------------------------------------
+     the predictor pass, per link and per automaton
+  ------------------------------------------------------------------------- */
+
+  // length of a link and the dyad n n^T of its direction; del = x_j - x_i
+  // (the dyad does not depend on the sign of del)
+  MCA_INLINE double link_direction(const double *del, double *nn)
+  {
+    const double r = sqrt(dot3(del, del));
+    const double n[3] = {del[0] / r, del[1] / r, del[2] / r};
+    for (int k = 0; k < 6; k++) nn[k] = 0.0;
+    fabric_add(nn, n);
+    return r;
+  }
+
+  // predicted strain increment of the half of automaton i (the lower ID
+  // if i_is_lo) of a link whose length changed by dr since the last step;
+  // h_i, h_j: predictor stiffnesses of the two automata
+  MCA_INLINE double link_half_strain(const double *hist, bool i_is_lo, double h_i, double h_j,
+                                     double dr)
+  {
+    const double sig_i = hist[(i_is_lo ? H_LO : H_HI) + HALF_SIG];
+    const double sig_j = hist[(i_is_lo ? H_HI : H_LO) + HALF_SIG];
+    const double q0_i = hist[i_is_lo ? H_Q0LO : H_Q0HI];
+    const double q0_j = hist[i_is_lo ? H_Q0HI : H_Q0LO];
+    return predicted_strain(sig_i, sig_j, h_i, h_j, q0_i, q0_j, dr);
+  }
+
+  // F += n n^T, M += de n n^T
+  MCA_INLINE void predictor_add(double *fab, double *mstrain, const double *nn, double de)
+  {
+    for (int k = 0; k < 6; k++) {
+      fab[k] += nn[k];
+      mstrain[k] += de * nn[k];
+    }
+  }
+
+  /* mean stress the normal law of an automaton applies at this step
+     (smean_pred) and its increment over the last step's (dsmean): the
+     prediction builds on the mean stress of the last step's tractions
+     (smean_step), so the error of one step's prediction is corrected at
+     the next.  A setup (or run 0) repeats the last step with only what
+     changed since; an automaton without interacting links keeps its mean
+     stress.                                                               */
+
+  MCA_INLINE void mean_stress_prediction(bool interacting, bool setup_pass, double smean_step,
+                                         double smean_law, const double *fab, const double *mstrain,
+                                         double K, double &smean_pred, double &dsmean)
+  {
+    if (!interacting) {
+      smean_pred = setup_pass ? smean_law : smean_step;
+      dsmean = smean_pred - smean_law;
+      return;
+    }
+    const double dsm = predicted_mean_stress_increment(fab, mstrain, K);
+    if (setup_pass) {
+      smean_pred = smean_law + dsm;
+      dsmean = dsm;
+    } else {
+      smean_pred = smean_step + dsm;
+      dsmean = smean_pred - smean_law;
+    }
+  }
+
+  // outputs of an automaton: stress tensor, mean stress (tension positive),
+  // von Mises equivalent stress and the equivalent strain seq / 3G
+  MCA_INLINE void automaton_stress(const double *bmat, const double *fab, double G, double *stress,
+                                   double &smean, double &seq, double &eeq)
+  {
+    homogenised_stress(bmat, fab, stress);
+    smean = (stress[0] + stress[1] + stress[2]) / 3.0;
+    const double sxx = stress[0], syy = stress[1], szz = stress[2];
+    seq = sqrt(
+        0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+        3.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]));
+    eeq = seq / (3.0 * G);
+  }
+
+  /* ----------------------------------------------------------------------
      normal strain increments of the two halves such that their tractions
      stay equal (Newton 3), for unequal materials and sizes:
        sig_i + 2G_i de_i + D_i dsm_i = sig_j + 2G_j de_j + D_j dsm_j

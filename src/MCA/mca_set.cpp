@@ -85,8 +85,9 @@ void MCASet::command(int narg, char **arg)
 {
   if (narg < 2) utils::missing_cmd_args(FLERR, "mca_set", error);
   if (domain->box_exist == 0) error->all(FLERR, "mca_set command before simulation box is defined");
-  auto avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  auto avec = MCAAtomFields::find(atom);
   if (!avec) error->all(FLERR, "mca_set requires atom_style mca, not {}", atom->atom_style);
+  avec->sync_host();    // atom-style variables below read the host copy
 
   const int igroup = group->find(arg[0]);
   if (igroup < 0) error->all(FLERR, "mca_set: could not find group ID {}", arg[0]);
@@ -95,7 +96,7 @@ void MCASet::command(int narg, char **arg)
   int new_packing = -1;
   Value values[NSCALAR];
   bool stress_given = false;
-  double new_stress[AtomVecMCA::NSTRESS] = {0.0};
+  double new_stress[MCAAtomFields::NSTRESS] = {0.0};
 
   int iarg = 1;
   while (iarg < narg) {
@@ -134,12 +135,12 @@ void MCASet::command(int narg, char **arg)
         error->all(FLERR, "mca_set packing must be one of none, sc, fcc, hcp; got {}", word);
       iarg += 2;
     } else if (keyword == "stress") {
-      if (iarg + 1 + AtomVecMCA::NSTRESS > narg)
+      if (iarg + 1 + MCAAtomFields::NSTRESS > narg)
         utils::missing_cmd_args(FLERR, "mca_set stress (needs sxx syy szz sxy sxz syz)", error);
-      for (int m = 0; m < AtomVecMCA::NSTRESS; m++)
+      for (int m = 0; m < MCAAtomFields::NSTRESS; m++)
         new_stress[m] = utils::numeric(FLERR, arg[iarg + 1 + m], false, lmp);
       stress_given = true;
-      iarg += 1 + AtomVecMCA::NSTRESS;
+      iarg += 1 + MCAAtomFields::NSTRESS;
     } else {
       error->all(FLERR,
                  "Unknown mca_set keyword {} (allowed: packing radius diameter density "
@@ -214,9 +215,10 @@ void MCASet::command(int narg, char **arg)
     if (values[EPSP].given) avec->epsp[i] = values[EPSP].at(i);
     if (values[DAMAGE].given) avec->damage[i] = values[DAMAGE].at(i);
     if (stress_given)
-      for (int m = 0; m < AtomVecMCA::NSTRESS; m++) avec->stress[i][m] = new_stress[m];
+      for (int m = 0; m < MCAAtomFields::NSTRESS; m++) avec->stress[i][m] = new_stress[m];
     count++;
   }
+  avec->modified_host();
   for (auto &value : values) memory->destroy(value.per_atom);
 
   bigint nlocal_set = count, nall_set;

@@ -42,7 +42,6 @@
 using namespace LAMMPS_NS;
 using namespace MCAKernels;
 
-enum { STAGE_COUNT, STAGE_MEAN };
 static const char FIX_LINKS_ID[] = "MCA_LINKS";
 
 /* ---------------------------------------------------------------------- */
@@ -253,7 +252,7 @@ void PairMCA::coeff(int narg, char **arg)
 
 void PairMCA::init_style()
 {
-  avec = dynamic_cast<AtomVecMCA *>(atom->style_match("mca"));
+  avec = MCAAtomFields::find(atom);
   if (!avec) error->all(FLERR, "Pair style mca requires atom_style mca, not {}", atom->atom_style);
   if (domain->dimension != 3) error->all(FLERR, "Pair style mca requires a 3d simulation");
   if (!comm->ghost_velocity)
@@ -274,11 +273,13 @@ void PairMCA::init_style()
   // restart files find it again
   links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
   if (!links)
-    links =
-        dynamic_cast<FixMCALinks *>(modify->add_fix(fmt::format("{} all MCA_LINKS", FIX_LINKS_ID)));
+    links = dynamic_cast<FixMCALinks *>(
+        modify->add_fix(fmt::format("{} all {}", FIX_LINKS_ID, links_fix_style())));
   links->row_sync = this;
 
+  avec->sync_host();
   set_masses();
+  avec->modified_host();
 
   // cutoff: the longest possible link plus room to stretch by R_max/2
   if (cutoff_user > 0.0) {
@@ -369,7 +370,11 @@ double PairMCA::init_one(int i, int j)
 
 void PairMCA::setup()
 {
-  if (!links->created) create_links();
+  if (links->created) return;
+  avec->sync_host();
+  links->to_host();
+  create_links();
+  links->host_changed();
 }
 
 void PairMCA::create_links()
@@ -576,53 +581,21 @@ void PairMCA::predict_mean_stress()
       if (jlocal && tag[j] < tag[i]) continue;
       const double *h = &links->history[i][m * H_SIZE];
       if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
-      double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      const double r = sqrt(dot3(del, del));
-      const double dr = r - h[H_RPREV];
+      const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      double nn[6];
+      const double dr = link_direction(del, nn) - h[H_RPREV];
       const bool ilo = tag[i] < tag[j];
-      const double sig_i = h[(ilo ? H_LO : H_HI) + HALF_SIG];
-      const double sig_j = h[(ilo ? H_HI : H_LO) + HALF_SIG];
-      const double q0_i = h[ilo ? H_Q0LO : H_Q0HI], q0_j = h[ilo ? H_Q0HI : H_Q0LO];
       const double h_i = pred_stiffness[i], h_j = pred_stiffness[j];
-      for (int k = 0; k < 3; k++) del[k] /= r;
-      double nn[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-      fabric_add(nn, del);
-      const double de_i = predicted_strain(sig_i, sig_j, h_i, h_j, q0_i, q0_j, dr);
-      for (int k = 0; k < 6; k++) {
-        fabric_atom[i][k] += nn[k];
-        pred_strain[i][k] += de_i * nn[k];
-      }
-      if (jlocal) {
-        const double de_j = predicted_strain(sig_j, sig_i, h_j, h_i, q0_j, q0_i, dr);
-        for (int k = 0; k < 6; k++) {
-          fabric_atom[j][k] += nn[k];
-          pred_strain[j][k] += de_j * nn[k];
-        }
-      }
+      predictor_add(fabric_atom[i], pred_strain[i], nn, link_half_strain(h, ilo, h_i, h_j, dr));
+      if (jlocal)
+        predictor_add(fabric_atom[j], pred_strain[j], nn, link_half_strain(h, !ilo, h_j, h_i, dr));
     }
   }
 
   for (int i = 0; i < nlocal; i++) {
-    if (link_count[i] == 0.0 || packing[i] == PACKING_NONE) {
-      smean_pred[i] = links->smean_step[i];
-      dsmean[i] = smean_pred[i] - links->smean_law[i];
-      if (setup_pass) {
-        smean_pred[i] = links->smean_law[i];
-        dsmean[i] = 0.0;
-      }
-      continue;
-    }
-    const double dsm =
-        predicted_mean_stress_increment(fabric_atom[i], pred_strain[i], bulk[type[i]]);
-    if (setup_pass) {
-      // a setup (or run 0) repeats the last step with only what changed
-      // since: the correction of the last prediction belongs to the next step
-      smean_pred[i] = links->smean_law[i] + dsm;
-      dsmean[i] = dsm;
-    } else {
-      smean_pred[i] = links->smean_step[i] + dsm;
-      dsmean[i] = smean_pred[i] - links->smean_law[i];
-    }
+    const bool interacting = link_count[i] > 0.0 && packing[i] != PACKING_NONE;
+    mean_stress_prediction(interacting, setup_pass, links->smean_step[i], links->smean_law[i],
+                           fabric_atom[i], pred_strain[i], bulk[type[i]], smean_pred[i], dsmean[i]);
   }
 
   comm_stage = STAGE_MEAN;
@@ -738,16 +711,10 @@ void PairMCA::compute(int eflag, int vflag)
 
   for (int i = 0; i < nlocal; i++) {
     // per-automaton outputs; the mean stress is tension positive
-    double stress[6];
-    homogenised_stress(bmat_atom[i], fabric_atom[i], stress);
-    const double smean = (stress[0] + stress[1] + stress[2]) / 3.0;
-    for (int k = 0; k < 6; k++) avec->stress[i][k] = stress[k];
+    double smean;
+    automaton_stress(bmat_atom[i], fabric_atom[i], shear[type[i]], avec->stress[i], smean,
+                     avec->seq[i], avec->eeq[i]);
     avec->smean[i] = smean;
-    const double sxx = stress[0], syy = stress[1], szz = stress[2];
-    avec->seq[i] = sqrt(
-        0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-        3.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]));
-    avec->eeq[i] = avec->seq[i] / (3.0 * shear[type[i]]);
     if (commit) {
       links->smean_step[i] = smean;
       links->smean_law[i] = smean_pred[i];
@@ -794,10 +761,7 @@ void PairMCA::build_partner_cache()
   if (cache_rows < atom->nmax || cache_cols < links->maxlinks) {
     cache_rows = atom->nmax;
     cache_cols = links->maxlinks;
-    memory->destroy(partner_cache);
-    memory->destroy(row_cache);
-    memory->create(partner_cache, cache_rows, cache_cols, "pair:partner_cache");
-    memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
+    allocate_partner_cache();
   }
   for (int i = 0; i < nlocal; i++)
     for (int m = 0; m < links->nlinks[i]; m++) {
@@ -812,6 +776,14 @@ void PairMCA::build_partner_cache()
                    tag[j]);
     }
   cache_nlocal = nlocal;
+}
+
+void PairMCA::allocate_partner_cache()
+{
+  memory->destroy(partner_cache);
+  memory->destroy(row_cache);
+  memory->create(partner_cache, cache_rows, cache_cols, "pair:partner_cache");
+  memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
 }
 
 /* ----------------------------------------------------------------------

@@ -49,7 +49,7 @@ class PairMCA : public Pair, public MCALinkRowSync {
 
   // the mean-stress predictor: a separate pass with its own forward
   // communication, called by compute() (and by the Kokkos variant)
-  void predict_mean_stress();
+  virtual void predict_mean_stress();
 
   double recommended_timestep();
   class FixMCALinks *links;
@@ -87,16 +87,22 @@ class PairMCA : public Pair, public MCALinkRowSync {
   int cache_rows, cache_cols, cache_nlocal;
   void destroy_peratom();
   int partner_rows_stale;    // rows of local links behind their partner's copy
+  // what the forward communication sends: the predictor stiffness, or the
+  // mean-stress increment and prediction
+  enum CommStage { STAGE_COUNT, STAGE_MEAN };
   int comm_stage;
   bigint nstretched;    // links longer than the cutoff at the last step
 
-  class AtomVecMCA *avec;
+  class MCAAtomFields *avec;
 
   void allocate();
   void grow_peratom();
   void create_links();
   void count_links();
   void build_partner_cache();
+  virtual void allocate_partner_cache();
+  // style of the internal fix that keeps the links
+  virtual const char *links_fix_style() const { return "MCA_LINKS"; }
   void set_masses();
   int partner_index(int i, tagint partner_tag);
   void stretched_warning();

@@ -1,0 +1,125 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+/* ----------------------------------------------------------------------
+   Contributing authors: MCA package developers
+------------------------------------------------------------------------- */
+
+#include "fix_mca_links_kokkos.h"
+
+#include "atom.h"
+#include "mca_kernels.h"
+#include "memory.h"
+#include "memory_kokkos.h"
+
+using namespace LAMMPS_NS;
+using namespace MCAKernels;
+
+/* ---------------------------------------------------------------------- */
+
+FixMCALinksKokkos::FixMCALinksKokkos(LAMMPS *lmp, int narg, char **arg) :
+    FixMCALinks(lmp, narg, arg)
+{
+  MCAKokkos::require_kokkos(lmp, "Fix MCA_LINKS/kk (internal fix of pair mca/kk)");
+  kokkosable = 1;
+
+  // a restart file restores the per-atom rows of a fix only into a fix of
+  // the same ID and style: this one and the CPU fix read each other's files
+  delete[] style;
+  style = utils::strdup("MCA_LINKS");
+
+  // the base constructor allocated the table with plain arrays (virtual
+  // calls do not reach this class there): redo it in DualViews
+  memory->destroy(nlinks);
+  memory->destroy(partner);
+  memory->destroy(history);
+  memory->destroy(smean_step);
+  memory->destroy(smean_law);
+  const int capacity = maxlinks;
+  maxlinks = 0;
+  set_capacity(capacity);
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixMCALinksKokkos::~FixMCALinksKokkos()
+{
+  // the base destructor then finds null pointers
+  memoryKK->destroy_kokkos(k_nlinks, nlinks);
+  memoryKK->destroy_kokkos(k_partner, partner);
+  memoryKK->destroy_kokkos(k_history, history);
+  memoryKK->destroy_kokkos(k_smean_step, smean_step);
+  memoryKK->destroy_kokkos(k_smean_law, smean_law);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinksKokkos::allocate_rows(int nmax)
+{
+  memoryKK->destroy_kokkos(k_partner, partner);
+  memoryKK->destroy_kokkos(k_history, history);
+  memoryKK->create_kokkos(k_partner, partner, nmax, maxlinks, "mca/links:partner");
+  memoryKK->create_kokkos(k_history, history, nmax, maxlinks * H_SIZE, "mca/links:history");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinksKokkos::grow_arrays(int nmax)
+{
+  to_host();
+  memoryKK->grow_kokkos(k_nlinks, nlinks, nmax, "mca/links:nlinks");
+  memoryKK->grow_kokkos(k_partner, partner, nmax, maxlinks, "mca/links:partner");
+  memoryKK->grow_kokkos(k_history, history, nmax, maxlinks * H_SIZE, "mca/links:history");
+  memoryKK->grow_kokkos(k_smean_step, smean_step, nmax, "mca/links:smean_step");
+  memoryKK->grow_kokkos(k_smean_law, smean_law, nmax, "mca/links:smean_law");
+  host_changed();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinksKokkos::to_host()
+{
+  k_nlinks.sync_host();
+  k_partner.sync_host();
+  k_history.sync_host();
+  k_smean_step.sync_host();
+  k_smean_law.sync_host();
+}
+
+void FixMCALinksKokkos::host_changed()
+{
+  k_nlinks.modify_host();
+  k_partner.modify_host();
+  k_history.modify_host();
+  k_smean_step.modify_host();
+  k_smean_law.modify_host();
+}
+
+void FixMCALinksKokkos::to_device()
+{
+  k_nlinks.sync_device();
+  k_partner.sync_device();
+  k_history.sync_device();
+  k_smean_step.sync_device();
+  k_smean_law.sync_device();
+}
+
+// the pair style changes only the history and the mean-stress record
+void FixMCALinksKokkos::device_changed()
+{
+  k_history.modify_device();
+  k_smean_step.modify_device();
+  k_smean_law.modify_device();
+}

@@ -1,0 +1,99 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   The one place where KOKKOS_MCA deals with differences between the
+   KOKKOS packages of the supported LAMMPS versions (the CPU half of the
+   package has its own, ../MCA/mca_compat.h).
+
+   - Views the package owns are declared here with explicit element types
+     and layouts (LayoutRight: row i of a 2d view is contiguous, as the
+     host pointer arrays made by memoryKK require), so that they do not
+     depend on the precision typedefs that changed names (F_FLOAT ... in
+     2021, KK_FLOAT later).
+   - DualViews are accessed with view_host(), template view<D>(),
+     sync_host(), modify_host(), which exist from Kokkos 3.4 on.
+   - The views of AtomKokkos are taken with decltype of what
+     k_x.view<D>() returns, never by their typedef names.
+   - Interfaces whose signatures changed (forward communication of pair
+     styles, the switch for the host "classic" exchange) have one macro
+     each below, selected by the probe MCA_HAVE_KK_FLOAT (KOKKOS of 2023
+     and later) written by cmake/Modules/Packages/MCA.cmake.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_MCA_KOKKOS_COMPAT_H
+#define LMP_MCA_KOKKOS_COMPAT_H
+
+#include "error.h"
+#include "kokkos_type.h"
+#include "lammps.h"
+#include "mca_config.h"
+
+#include <type_traits>
+#include <utility>
+
+namespace LAMMPS_NS {
+namespace MCAKokkos {
+
+  template <class DeviceType> using double_1d = Kokkos::View<double *, DeviceType>;
+  template <class DeviceType>
+  using double_2d = Kokkos::View<double **, Kokkos::LayoutRight, DeviceType>;
+  template <class DeviceType> using int_1d = Kokkos::View<int *, DeviceType>;
+  template <class DeviceType> using int_2d = Kokkos::View<int **, Kokkos::LayoutRight, DeviceType>;
+
+  typedef Kokkos::DualView<double *, LMPDeviceType> dual_double_1d;
+  typedef Kokkos::DualView<double **, Kokkos::LayoutRight, LMPDeviceType> dual_double_2d;
+  typedef Kokkos::DualView<int *, LMPDeviceType> dual_int_1d;
+  typedef Kokkos::DualView<int **, Kokkos::LayoutRight, LMPDeviceType> dual_int_2d;
+  typedef Kokkos::DualView<tagint **, Kokkos::LayoutRight, LMPDeviceType> dual_tagint_2d;
+
+  // the view of a DualView member of AtomKokkos on DeviceType, whatever its typedef name
+  template <class DualViewType, class DeviceType>
+  using view_of = typename std::decay<
+      decltype(std::declval<DualViewType &>().template view<DeviceType>())>::type;
+
+  // the Kokkos styles construct only in a Kokkos-enabled run: a restart
+  // file written by one holds their names (LAMMPS 2021 keeps the suffix)
+  inline void require_kokkos(LAMMPS *lmp, const char *what)
+  {
+    if (!lmp->kokkos)
+      lmp->error->all(FLERR,
+                      "{} requires the KOKKOS package enabled with the command-line switch "
+                      "'-k on' (a restart file written by a run with -sf kk names the /kk "
+                      "styles: read it with -k on -sf kk)",
+                      what);
+  }
+
+  // execution space tag of LAMMPS for a device type
+  template <class DeviceType> inline ExecutionSpace space_of()
+  {
+    return ExecutionSpaceFromDevice<DeviceType>::space;
+  }
+
+}    // namespace MCAKokkos
+}    // namespace LAMMPS_NS
+
+// forward communication of per-atom data of a pair style, Kokkos path
+#ifdef MCA_HAVE_KK_FLOAT
+#define MCA_KK_COMM_BUFFER DAT::tdual_double_1d
+#define MCA_KK_PACK_FORWARD_ARGS \
+  int n, DAT::tdual_int_1d k_sendlist, MCA_KK_COMM_BUFFER &k_buf, int pbc_flag, int *pbc
+#define MCA_KK_SENDLIST(list, iswap, i) list(i)
+#else
+#define MCA_KK_COMM_BUFFER DAT::tdual_xfloat_1d
+#define MCA_KK_PACK_FORWARD_ARGS \
+  int n, DAT::tdual_int_2d k_sendlist, int iswap, MCA_KK_COMM_BUFFER &k_buf, int pbc_flag, int *pbc
+#define MCA_KK_SENDLIST(list, iswap, i) list(iswap, i)
+#endif
+
+#endif

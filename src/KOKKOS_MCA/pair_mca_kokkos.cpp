@@ -1,0 +1,754 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+/* ----------------------------------------------------------------------
+   Contributing authors: MCA package developers
+------------------------------------------------------------------------- */
+
+#include "pair_mca_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "atom_vec_mca_kokkos.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_mca_links_kokkos.h"
+#include "force.h"
+#include "memory_kokkos.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "mca_kernels.h"
+
+using namespace LAMMPS_NS;
+using namespace MCAKernels;
+
+// doubles per slot of the result buffer
+enum ResultSlot { R_FORCE = 0, R_TORQUE = 3, R_TRACTION = 6, R_NORMAL = 9, R_WORK = 12, R_SIZE };
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   everything a kernel reads or writes, copied into each functor
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCAPairViews {
+  template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
+  typedef MCAKokkos::double_1d<DeviceType> double_1d;
+  typedef MCAKokkos::double_2d<DeviceType> double_2d;
+  typedef MCAKokkos::int_1d<DeviceType> int_1d;
+  typedef MCAKokkos::int_2d<DeviceType> int_2d;
+
+  view<decltype(AtomKokkos::k_x)> x;
+  view<decltype(AtomKokkos::k_omega)> omega;
+  view<decltype(AtomKokkos::k_f)> f;
+  view<decltype(AtomKokkos::k_torque)> torque;
+  view<decltype(AtomKokkos::k_type)> type;
+  view<decltype(AtomKokkos::k_tag)> tag;
+  int_1d packing;
+  double_2d stress;
+  double_1d smean, seq, eeq;
+
+  int_1d nlinks;
+  double_2d history;
+  double_1d smean_step, smean_law;
+  int_2d partner, row;
+
+  double_1d pred_stiffness, dsmean, smean_pred;
+  int_1d link_count;
+  double_2d fabric, bmat, result;
+  double_1d shear, bulk, coupling;
+  double_1d eatom;
+  double_2d vatom;
+
+  int nlocal;
+
+  // the history row of link m of automaton i that is current: a link
+  // between local automata advances in the row of the lower ID
+  KOKKOS_INLINE_FUNCTION const double *current_row(int i, int m) const
+  {
+    const int j = partner(i, m);
+    if (j < nlocal && tag(j) < tag(i)) return &history(j, row(i, m) * H_SIZE);
+    return &history(i, m * H_SIZE);
+  }
+};
+
+/* ----------------------------------------------------------------------
+   energy, virial and count of over-long links of the link pass
+------------------------------------------------------------------------- */
+
+struct MCALinkSums {
+  double energy;
+  double virial[6];
+  bigint nlong;
+
+  KOKKOS_INLINE_FUNCTION MCALinkSums() : energy(0.0), virial{0, 0, 0, 0, 0, 0}, nlong(0) {}
+  KOKKOS_INLINE_FUNCTION void operator+=(const MCALinkSums &rhs)
+  {
+    energy += rhs.energy;
+    for (int k = 0; k < 6; k++) virial[k] += rhs.virial[k];
+    nlong += rhs.nlong;
+  }
+  KOKKOS_INLINE_FUNCTION void operator+=(const volatile MCALinkSums &rhs) volatile
+  {
+    energy += rhs.energy;
+    for (int k = 0; k < 6; k++) virial[k] += rhs.virial[k];
+    nlong += rhs.nlong;
+  }
+};
+
+// the virial of a pair force f on atom i at separation del = x_i - x_j,
+// in the order of Pair::ev_tally_xyz
+KOKKOS_INLINE_FUNCTION void pair_virial(const double *del, const double *f, double *v)
+{
+  v[0] = del[0] * f[0];
+  v[1] = del[1] * f[1];
+  v[2] = del[2] * f[2];
+  v[3] = del[0] * f[1];
+  v[4] = del[0] * f[2];
+  v[5] = del[1] * f[2];
+}
+
+/* ----------------------------------------------------------------------
+   kernel: number of interacting links of each automaton and its
+   stiffness in the predictor
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCACountLinks {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    int n = 0;
+    for (int m = 0; m < d.nlinks(i); m++)
+      if (static_cast<int>(d.current_row(i, m)[H_STATE]) == LINK_LINKED) n++;
+    d.link_count(i) = n;
+    const int it = d.type(i);
+    const int nc = d.packing(i);
+    d.pred_stiffness(i) = (nc > 0) ? predictor_stiffness(d.shear(it), d.bulk(it), nc, n) : 0.0;
+  }
+};
+
+/* ----------------------------------------------------------------------
+   kernel: the mean-stress predictor of each automaton
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCAPredictor {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  bool setup_pass;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double mstrain[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const double *h = d.current_row(i, m);
+      if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
+      const int j = d.partner(i, m);
+      const double del[3] = {d.x(j, 0) - d.x(i, 0), d.x(j, 1) - d.x(i, 1), d.x(j, 2) - d.x(i, 2)};
+      double nn[6];
+      const double dr = link_direction(del, nn) - h[H_RPREV];
+      const bool ilo = d.tag(i) < d.tag(j);
+      predictor_add(fab, mstrain, nn,
+                    link_half_strain(h, ilo, d.pred_stiffness(i), d.pred_stiffness(j), dr));
+    }
+    for (int k = 0; k < 6; k++) d.fabric(i, k) = fab[k];
+    const bool interacting = d.link_count(i) > 0 && d.packing(i) != PACKING_NONE;
+    double smean_pred, dsmean;
+    mean_stress_prediction(interacting, setup_pass, d.smean_step(i), d.smean_law(i), fab, mstrain,
+                           d.bulk(d.type(i)), smean_pred, dsmean);
+    d.smean_pred(i) = smean_pred;
+    d.dsmean(i) = dsmean;
+  }
+};
+
+/* ----------------------------------------------------------------------
+   kernel: the links each automaton computes (to a ghost atom, or to a
+   local automaton of higher ID): tractions, forces, torques, history
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCALinkPass {
+  typedef DeviceType device_type;
+  typedef MCALinkSums value_type;
+  MCAPairViews<DeviceType> d;
+  bool commit, eager, eflag_global, vflag_global, eflag_atom, vflag_atom;
+  double dt, cutsq;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, MCALinkSums &sums) const
+  {
+    double fsum[3] = {0.0, 0.0, 0.0}, tsum[3] = {0.0, 0.0, 0.0};
+    double bmat[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double eatom = 0.0, vatom[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+
+    for (int m = 0; m < d.nlinks(i); m++) {
+      double *row = &d.history(i, m * H_SIZE);
+      if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
+      const int j = d.partner(i, m);
+      const bool jlocal = j < d.nlocal;
+      const bool ilo = d.tag(i) < d.tag(j);
+      if (jlocal && !ilo) continue;    // the partner computes it
+      const int lo = ilo ? i : j, hi = ilo ? j : i;
+      const int tlo = d.type(lo), thi = d.type(hi);
+
+      // a step updates the row in place; a setup works on a copy
+      double copy[H_SIZE];
+      double *h = row;
+      if (!commit) {
+        for (int k = 0; k < H_SIZE; k++) copy[k] = row[k];
+        h = copy;
+      }
+      const double x_lo[3] = {d.x(lo, 0), d.x(lo, 1), d.x(lo, 2)};
+      const double x_hi[3] = {d.x(hi, 0), d.x(hi, 1), d.x(hi, 2)};
+      const double w_lo[3] = {d.omega(lo, 0), d.omega(lo, 1), d.omega(lo, 2)};
+      const double w_hi[3] = {d.omega(hi, 0), d.omega(hi, 1), d.omega(hi, 2)};
+      double fpair[3], tq_lo[3], tq_hi[3], trac[3], nvec[3], sig, r;
+      linked_pair(h, x_lo, x_hi, w_lo, w_hi, d.shear(tlo), d.shear(thi), d.coupling(tlo),
+                  d.coupling(thi), d.bulk(tlo), d.bulk(thi), d.dsmean(lo), d.dsmean(hi),
+                  d.smean_pred(lo), d.smean_pred(hi), face_moment_factor(d.packing(lo)), dt, fpair,
+                  tq_lo, tq_hi, sig, trac, r, nvec);
+      if (r * r > cutsq) sums.nlong += jlocal ? 2 : 1;
+
+      const double sign = ilo ? 1.0 : -1.0;
+      const double *tq = ilo ? tq_lo : tq_hi;
+      for (int k = 0; k < 3; k++) {
+        fsum[k] += sign * fpair[k];
+        tsum[k] += tq[k];
+      }
+      traction_add(bmat, trac, nvec);
+
+      if (jlocal) {
+        double *slot = &d.result(j, d.row(i, m) * R_SIZE);
+        for (int k = 0; k < 3; k++) {
+          slot[R_FORCE + k] = -fpair[k];
+          slot[R_TORQUE + k] = tq_hi[k];
+          slot[R_TRACTION + k] = trac[k];
+          slot[R_NORMAL + k] = nvec[k];
+        }
+        slot[R_WORK] = h[H_WORK];
+        if (commit && eager) {
+          double *partner_row = &d.history(j, d.row(i, m) * H_SIZE);
+          for (int k = 0; k < H_SIZE; k++) partner_row[k] = row[k];
+        }
+      }
+
+      // energy and virial: the whole pair, or this owner's half of it
+      const double share = jlocal ? 1.0 : 0.5;
+      if (eflag_global) sums.energy += share * h[H_WORK];
+      if (eflag_atom) eatom += 0.5 * h[H_WORK];
+      if (vflag_global || vflag_atom) {
+        const double del[3] = {d.x(i, 0) - d.x(j, 0), d.x(i, 1) - d.x(j, 1), d.x(i, 2) - d.x(j, 2)};
+        const double fi[3] = {share * sign * fpair[0], share * sign * fpair[1],
+                              share * sign * fpair[2]};
+        double v[6];
+        pair_virial(del, fi, v);
+        for (int k = 0; k < 6; k++) {
+          if (vflag_global) sums.virial[k] += v[k];
+          // per atom: half of the whole pair's virial
+          if (vflag_atom) vatom[k] += (jlocal ? 0.5 : 1.0) * v[k];
+        }
+      }
+    }
+
+    for (int k = 0; k < 3; k++) {
+      d.f(i, k) += fsum[k];
+      d.torque(i, k) += tsum[k];
+    }
+    for (int k = 0; k < 9; k++) d.bmat(i, k) = bmat[k];
+    if (eflag_atom) d.eatom(i) += eatom;
+    if (vflag_atom)
+      for (int k = 0; k < 6; k++) d.vatom(i, k) += vatom[k];
+  }
+};
+
+/* ----------------------------------------------------------------------
+   kernel: each automaton gathers what its lower-ID local partners left
+   for it, then sets its stress
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCAGatherStress {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  bool commit, eflag_atom, vflag_atom;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    double fsum[3] = {0.0, 0.0, 0.0}, tsum[3] = {0.0, 0.0, 0.0};
+    double bmat[9];
+    for (int k = 0; k < 9; k++) bmat[k] = d.bmat(i, k);
+    double eatom = 0.0, vatom[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const int j = d.partner(i, m);
+      if (!(j < d.nlocal && d.tag(j) < d.tag(i))) continue;
+      if (static_cast<int>(d.current_row(i, m)[H_STATE]) != LINK_LINKED) continue;
+      const double *slot = &d.result(i, m * R_SIZE);
+      for (int k = 0; k < 3; k++) {
+        fsum[k] += slot[R_FORCE + k];
+        tsum[k] += slot[R_TORQUE + k];
+      }
+      traction_add(bmat, slot + R_TRACTION, slot + R_NORMAL);
+      if (eflag_atom) eatom += 0.5 * slot[R_WORK];
+      if (vflag_atom) {
+        const double del[3] = {d.x(i, 0) - d.x(j, 0), d.x(i, 1) - d.x(j, 1), d.x(i, 2) - d.x(j, 2)};
+        double v[6];
+        pair_virial(del, slot + R_FORCE, v);
+        for (int k = 0; k < 6; k++) vatom[k] += 0.5 * v[k];
+      }
+    }
+    for (int k = 0; k < 3; k++) {
+      d.f(i, k) += fsum[k];
+      d.torque(i, k) += tsum[k];
+    }
+    if (eflag_atom) d.eatom(i) += eatom;
+    if (vflag_atom)
+      for (int k = 0; k < 6; k++) d.vatom(i, k) += vatom[k];
+
+    double fab[6], stress[6], smean, seq, eeq;
+    for (int k = 0; k < 6; k++) fab[k] = d.fabric(i, k);
+    automaton_stress(bmat, fab, d.shear(d.type(i)), stress, smean, seq, eeq);
+    for (int k = 0; k < 6; k++) d.stress(i, k) = stress[k];
+    d.smean(i) = smean;
+    d.seq(i) = seq;
+    d.eeq(i) = eeq;
+    if (commit) {
+      d.smean_step(i) = smean;
+      d.smean_law(i) = d.smean_pred(i);
+    }
+  }
+};
+
+/* ----------------------------------------------------------------------
+   kernel: copy the current row of each local link to the partner's row
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCASyncRows {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const int j = d.partner(i, m);
+      if (!(j < d.nlocal && d.tag(j) < d.tag(i))) continue;
+      const double *from = &d.history(j, d.row(i, m) * H_SIZE);
+      double *to = &d.history(i, m * H_SIZE);
+      for (int k = 0; k < H_SIZE; k++) to[k] = from[k];
+    }
+  }
+};
+
+/* ----------------------------------------------------------------------
+   kernels: forward communication of the predictor values
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCAPackForward {
+  typedef DeviceType device_type;
+  MCAKokkos::double_1d<DeviceType> a, b;    // b unused when stride is 1
+  MCAKokkos::view_of<DAT::tdual_int_2d, DeviceType> list;
+  MCAKokkos::view_of<MCA_KK_COMM_BUFFER, DeviceType> buf;
+  int iswap, stride;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    const int j = MCA_KK_SENDLIST(list, iswap, i);
+    buf(stride * i) = a(j);
+    if (stride == 2) buf(2 * i + 1) = b(j);
+  }
+};
+
+template <class DeviceType> struct MCAUnpackForward {
+  typedef DeviceType device_type;
+  MCAKokkos::double_1d<DeviceType> a, b;
+  MCAKokkos::view_of<MCA_KK_COMM_BUFFER, DeviceType> buf;
+  int first, stride;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    a(first + i) = buf(stride * i);
+    if (stride == 2) b(first + i) = buf(2 * i + 1);
+  }
+};
+
+}    // namespace LAMMPS_NS
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType>
+PairMCAKokkos<DeviceType>::PairMCAKokkos(LAMMPS *lmp) :
+    PairMCA(lmp), avecKK(nullptr), linksKK(nullptr), kk_nmax(0), result_rows(0), result_cols(0),
+    pack_iswap(0)
+{
+  MCAKokkos::require_kokkos(lmp, "Pair style mca/kk");
+  kokkosable = 1;
+  atomKK = (AtomKokkos *) atom;
+  execution_space = MCAKokkos::space_of<DeviceType>();
+  datamask_read = X_MASK | F_MASK | TORQUE_MASK | OMEGA_MASK | TYPE_MASK | TAG_MASK |
+      MCA_GEOMETRY_MASK | ENERGY_MASK | VIRIAL_MASK;
+  datamask_modify = F_MASK | TORQUE_MASK | MCA_STATE_MASK | ENERGY_MASK | VIRIAL_MASK;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> PairMCAKokkos<DeviceType>::~PairMCAKokkos()
+{
+  if (copymode) return;
+  // the base destructor then finds null pointers
+  memoryKK->destroy_kokkos(k_pred_stiffness, pred_stiffness);
+  memoryKK->destroy_kokkos(k_dsmean, dsmean);
+  memoryKK->destroy_kokkos(k_smean_pred, smean_pred);
+  memoryKK->destroy_kokkos(k_partner_cache, partner_cache);
+  memoryKK->destroy_kokkos(k_row_cache, row_cache);
+  memoryKK->destroy_kokkos(k_eatom, eatom);
+  memoryKK->destroy_kokkos(k_vatom, vatom);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::init_style()
+{
+  avecKK = dynamic_cast<AtomVecMCAKokkos *>(atom->avec);
+  if (!avecKK)
+    error->all(FLERR, "Pair style mca/kk requires atom_style mca/kk, not {}", atom->atom_style);
+
+  PairMCA::init_style();
+
+  linksKK = dynamic_cast<FixMCALinksKokkos *>(links);
+  if (!linksKK)
+    error->all(FLERR,
+               "Pair style mca/kk: the links of this system were made by pair_style mca "
+               "without the Kokkos suffix; use the same variant throughout a simulation or "
+               "go through a restart file");
+
+  if (comm->me == 0)
+    utils::logmesg(lmp, "pair mca/kk: link passes as Kokkos kernels in the {} execution space\n",
+                   execution_space == Device ? "device" : "host");
+
+  // materials by type, on the device
+  const int n = atom->ntypes + 1;
+  d_shear = MCAKokkos::double_1d<DeviceType>("pair:shear", n);
+  d_bulk = MCAKokkos::double_1d<DeviceType>("pair:bulk", n);
+  d_coupling = MCAKokkos::double_1d<DeviceType>("pair:coupling", n);
+  auto h_shear = Kokkos::create_mirror_view(d_shear);
+  auto h_bulk = Kokkos::create_mirror_view(d_bulk);
+  auto h_coupling = Kokkos::create_mirror_view(d_coupling);
+  for (int t = 0; t < n; t++) {
+    h_shear(t) = shear[t];
+    h_bulk(t) = bulk[t];
+    h_coupling(t) = coupling[t];
+  }
+  Kokkos::deep_copy(d_shear, h_shear);
+  Kokkos::deep_copy(d_bulk, h_bulk);
+  Kokkos::deep_copy(d_coupling, h_coupling);
+}
+
+/* ----------------------------------------------------------------------
+   links are made on the host from an occasional neighbor list
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::setup()
+{
+  PairMCA::setup();
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
+{
+  if (atom->nmax > kk_nmax) {
+    kk_nmax = atom->nmax;
+    memoryKK->destroy_kokkos(k_pred_stiffness, pred_stiffness);
+    memoryKK->destroy_kokkos(k_dsmean, dsmean);
+    memoryKK->destroy_kokkos(k_smean_pred, smean_pred);
+    memoryKK->create_kokkos(k_pred_stiffness, pred_stiffness, kk_nmax, "pair:pred_stiffness");
+    memoryKK->create_kokkos(k_dsmean, dsmean, kk_nmax, "pair:dsmean");
+    memoryKK->create_kokkos(k_smean_pred, smean_pred, kk_nmax, "pair:smean_pred");
+    d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nmax);
+    d_fabric = MCAKokkos::double_2d<DeviceType>("pair:fabric", kk_nmax, 6);
+    d_bmat = MCAKokkos::double_2d<DeviceType>("pair:bmat", kk_nmax, 9);
+  }
+  if (atom->nmax > result_rows || links->maxlinks > result_cols) {
+    result_rows = atom->nmax;
+    result_cols = links->maxlinks;
+    d_result = MCAKokkos::double_2d<DeviceType>(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:result"), result_rows,
+        result_cols * R_SIZE);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::allocate_partner_cache()
+{
+  memoryKK->destroy_kokkos(k_partner_cache, partner_cache);
+  memoryKK->destroy_kokkos(k_row_cache, row_cache);
+  memoryKK->create_kokkos(k_partner_cache, partner_cache, cache_rows, cache_cols,
+                          "pair:partner_cache");
+  memoryKK->create_kokkos(k_row_cache, row_cache, cache_rows, cache_cols, "pair:row_cache");
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::views()
+{
+  MCAPairViews<DeviceType> d;
+  d.x = atomKK->k_x.template view<DeviceType>();
+  d.omega = atomKK->k_omega.template view<DeviceType>();
+  d.f = atomKK->k_f.template view<DeviceType>();
+  d.torque = atomKK->k_torque.template view<DeviceType>();
+  d.type = atomKK->k_type.template view<DeviceType>();
+  d.tag = atomKK->k_tag.template view<DeviceType>();
+  d.packing = avecKK->k_packing.template view<DeviceType>();
+  d.stress = avecKK->k_stress.template view<DeviceType>();
+  d.smean = avecKK->k_smean.template view<DeviceType>();
+  d.seq = avecKK->k_seq.template view<DeviceType>();
+  d.eeq = avecKK->k_eeq.template view<DeviceType>();
+  d.nlinks = linksKK->k_nlinks.template view<DeviceType>();
+  d.history = linksKK->k_history.template view<DeviceType>();
+  d.smean_step = linksKK->k_smean_step.template view<DeviceType>();
+  d.smean_law = linksKK->k_smean_law.template view<DeviceType>();
+  d.partner = k_partner_cache.template view<DeviceType>();
+  d.row = k_row_cache.template view<DeviceType>();
+  d.pred_stiffness = k_pred_stiffness.template view<DeviceType>();
+  d.dsmean = k_dsmean.template view<DeviceType>();
+  d.smean_pred = k_smean_pred.template view<DeviceType>();
+  d.link_count = d_link_count;
+  d.fabric = d_fabric;
+  d.bmat = d_bmat;
+  d.result = d_result;
+  d.shear = d_shear;
+  d.bulk = d_bulk;
+  d.coupling = d_coupling;
+  if (eflag_atom) d.eatom = k_eatom.template view<DeviceType>();
+  if (vflag_atom) d.vatom = k_vatom.template view<DeviceType>();
+  d.nlocal = atom->nlocal;
+  return d;
+}
+
+/* ----------------------------------------------------------------------
+   forward communication of a stage's per-atom values, device or host
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::forward_comm_stage(int stage)
+{
+  comm_stage = stage;
+  k_pred_stiffness.template modify<DeviceType>();
+  k_dsmean.template modify<DeviceType>();
+  k_smean_pred.template modify<DeviceType>();
+  MCACompat::forward_comm(comm, this);
+  k_pred_stiffness.template sync<DeviceType>();
+  k_dsmean.template sync<DeviceType>();
+  k_smean_pred.template sync<DeviceType>();
+}
+
+template <class DeviceType>
+int PairMCAKokkos<DeviceType>::pack_forward_comm_kokkos(MCA_KK_PACK_FORWARD_ARGS)
+{
+  (void) pbc_flag;
+  (void) pbc;
+  MCAPackForward<DeviceType> pack;
+  pack.stride = (comm_stage == STAGE_COUNT) ? 1 : 2;
+  pack.a = (comm_stage == STAGE_COUNT) ? k_pred_stiffness.template view<DeviceType>()
+                                       : k_dsmean.template view<DeviceType>();
+  pack.b = k_smean_pred.template view<DeviceType>();
+  pack.list = k_sendlist.template view<DeviceType>();
+  pack.buf = k_buf.template view<DeviceType>();
+#ifdef MCA_HAVE_KK_FLOAT
+  pack.iswap = 0;
+#else
+  pack.iswap = iswap;
+#endif
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, n), pack);
+  return n * pack.stride;
+}
+
+template <class DeviceType>
+void PairMCAKokkos<DeviceType>::unpack_forward_comm_kokkos(int n, int first,
+                                                           MCA_KK_COMM_BUFFER &k_buf)
+{
+  MCAUnpackForward<DeviceType> unpack;
+  unpack.stride = (comm_stage == STAGE_COUNT) ? 1 : 2;
+  unpack.a = (comm_stage == STAGE_COUNT) ? k_pred_stiffness.template view<DeviceType>()
+                                         : k_dsmean.template view<DeviceType>();
+  unpack.b = k_smean_pred.template view<DeviceType>();
+  unpack.buf = k_buf.template view<DeviceType>();
+  unpack.first = first;
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, n), unpack);
+}
+
+template <class DeviceType>
+int PairMCAKokkos<DeviceType>::pack_forward_comm(int n, int *list, double *buf, int pbc_flag,
+                                                 int *pbc)
+{
+  k_pred_stiffness.sync_host();
+  k_dsmean.sync_host();
+  k_smean_pred.sync_host();
+  return PairMCA::pack_forward_comm(n, list, buf, pbc_flag, pbc);
+}
+
+template <class DeviceType>
+void PairMCAKokkos<DeviceType>::unpack_forward_comm(int n, int first, double *buf)
+{
+  k_pred_stiffness.sync_host();
+  k_dsmean.sync_host();
+  k_smean_pred.sync_host();
+  PairMCA::unpack_forward_comm(n, first, buf);
+  k_pred_stiffness.modify_host();
+  k_dsmean.modify_host();
+  k_smean_pred.modify_host();
+}
+
+/* ----------------------------------------------------------------------
+   number of interacting links per automaton, sent to the ghosts
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::count_links_kk()
+{
+  MCACountLinks<DeviceType> count;
+  count.d = views();
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), count);
+  forward_comm_stage(STAGE_COUNT);
+}
+
+/* ----------------------------------------------------------------------
+   the mean-stress kernel (see PairMCA::predict_mean_stress())
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::predict_mean_stress()
+{
+  MCAPredictor<DeviceType> predictor;
+  predictor.d = views();
+  predictor.setup_pass = (update->setupflag != 0);
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), predictor);
+  forward_comm_stage(STAGE_MEAN);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag, 0);
+  if (!links->created) error->all(FLERR, "Pair mca/kk: compute() before the links were made");
+
+  if (eflag_atom) {
+    memoryKK->destroy_kokkos(k_eatom, eatom);
+    memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
+  }
+  if (vflag_atom) {
+    memoryKK->destroy_kokkos(k_vatom, vatom);
+    memoryKK->create_kokkos(k_vatom, vatom, maxvatom, 6, "pair:vatom");
+  }
+
+  atomKK->sync(execution_space, datamask_read);
+  atomKK->modified(execution_space, datamask_modify);
+  grow_kk_peratom();
+
+  // the partner cache is made on the host when LAMMPS reneighbors (the
+  // atom map and the closest images live there)
+  if (neighbor->ago == 0 || cache_nlocal != atom->nlocal) {
+    if (partner_rows_stale)
+      error->one(FLERR, "Pair mca/kk: atoms were reordered while link rows were out of date");
+    atomKK->sync(Host, X_MASK | TAG_MASK);
+    links->to_host();
+    build_partner_cache();
+    grow_kk_peratom();
+    k_partner_cache.modify_host();
+    k_row_cache.modify_host();
+    k_partner_cache.template sync<DeviceType>();
+    k_row_cache.template sync<DeviceType>();
+    linksKK->to_device();
+    count_links_kk();
+  }
+  linksKK->to_device();
+
+  const bool commit = (update->setupflag == 0);
+  const bool lazy = links->lazy_rows && links->row_sync == this;
+
+  predict_mean_stress();
+
+  MCALinkPass<DeviceType> pass;
+  pass.d = views();
+  pass.commit = commit;
+  pass.eager = !lazy;
+  pass.eflag_global = eflag_global;
+  pass.vflag_global = vflag_global;
+  pass.eflag_atom = eflag_atom;
+  pass.vflag_atom = vflag_atom;
+  // spins turn the automata only in steps of a run (see PairMCA::compute)
+  pass.dt = commit ? update->dt : 0.0;
+  pass.cutsq = cut_global * cut_global;
+  MCALinkSums sums;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), pass, sums);
+
+  MCAGatherStress<DeviceType> gather;
+  gather.d = pass.d;
+  gather.commit = commit;
+  gather.eflag_atom = eflag_atom;
+  gather.vflag_atom = vflag_atom;
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), gather);
+
+  linksKK->device_changed();
+  if (commit && lazy) partner_rows_stale = 1;
+
+  if (eflag_global) eng_vdwl += sums.energy;
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += sums.virial[k];
+  if (eflag_atom) {
+    k_eatom.template modify<DeviceType>();
+    k_eatom.sync_host();
+  }
+  if (vflag_atom) {
+    k_vatom.template modify<DeviceType>();
+    k_vatom.sync_host();
+  }
+
+  nstretched = sums.nlong;
+  if (neighbor->ago == 0) stretched_warning();
+}
+
+/* ----------------------------------------------------------------------
+   partner copies of the local links (see PairMCA::sync_link_rows())
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::sync_link_rows()
+{
+  if (!partner_rows_stale) return;
+  if (cache_nlocal != atom->nlocal)
+    error->one(FLERR, "Pair mca/kk: atoms were reordered while link rows were out of date");
+  linksKK->to_device();
+  MCASyncRows<DeviceType> rows;
+  rows.d = views();
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), rows);
+  linksKK->device_changed();
+  partner_rows_stale = 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> double PairMCAKokkos<DeviceType>::memory_usage()
+{
+  double bytes = PairMCA::memory_usage();
+  bytes += (3.0 + 6.0 + 9.0) * kk_nmax * sizeof(double) + kk_nmax * sizeof(int);
+  bytes += (double) result_rows * result_cols * R_SIZE * sizeof(double);
+  return bytes;
+}
+
+namespace LAMMPS_NS {
+template class PairMCAKokkos<LMPDeviceType>;
+#ifdef LMP_KOKKOS_GPU
+template class PairMCAKokkos<LMPHostType>;
+#endif
+}    // namespace LAMMPS_NS

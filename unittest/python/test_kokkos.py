@@ -1,0 +1,312 @@
+"""KOKKOS_MCA: the kk styles (atom_style mca/kk, pair_style mca/kk, fix
+nve/mca/kk, the internal links fix) against the CPU styles, in the build
+that has the KOKKOS package (LAMMPS 29 Sep 2021, Kokkos OpenMP).
+
+Scenes (the examples' inputs, 2000 steps each): the free-grip tension and
+the clamped shear of a 5a fcc cube, the P-wave bar (10 planes per
+wavelength) and a periodic box sheared to 10 % by fix deform.  Each is run
+with the CPU styles, with -k on -sf kk on 1 and 2 threads, and on 2 MPI
+ranks x 1 thread; every atom's displacement, velocity, spin, force, torque,
+mean stress and stress tensor are dumped at every step up to 100 and every
+100 steps after that.
+
+What is compared, and why these tolerances:
+- every field is scaled by its natural magnitude over the run (see SCALES):
+  forces by the largest link force (largest stress x (2R)^2), torques by
+  that times R, velocities by the larger of the largest velocity and the
+  particle velocity sigma/(rho c_p) that carries the largest stress.  In
+  the quasi-static scenes the net force on an automaton is a residual of
+  1e-4 .. 1e-6 of its link forces, so scaling by the net force would
+  measure the cancellation, not the agreement.
+- up to step 100: 1e-12.  The kk kernels sum the same per-link terms in
+  another order (each automaton gathers its links in row order), which
+  changes the last bits (measured <= 2e-13).
+- after 2000 steps: 1e-8, or 128 units in the last place of the
+  coordinates relative to the peak displacement where that is larger.
+  Once a position differs by one unit in the last place (ulp 4.4e-16 m at
+  3.6 m), the strain of its links differs by ulp / r0 ~ 1e-15: 1e-10 of
+  the strains of 1e-5 of the cube and the box (measured <= 6e-10), but
+  5e-10 of the 1.7e-6 of the wave (amplitude 1e-6 m), whose differences
+  reach 1.5e-8 = 70 ulp / peak displacement.  The ulp floor is what double
+  precision coordinates can resolve.
+- kk with 1 and 2 threads: identical bits (the gather is deterministic).
+- 2 MPI ranks vs 1: atoms are numbered by rank, so the lower ID of a link
+  (which computes it) differs; same tolerances, atoms matched by position.
+"""
+
+import functools
+import pathlib
+
+import numpy as np
+import pytest
+
+from mcatest import build_named, read_dump
+
+EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "examples"
+
+E, NU, RHO, A = 70.0e9, 0.3, 2700.0, 0.7184
+RADIUS = A / (2.0 * np.sqrt(2.0))
+G = E / (2 * (1 + NU))
+K = E / (3 * (1 - 2 * NU))
+C_P = np.sqrt((K + 4 * G / 3) / RHO)
+
+NSTEPS = 2000
+EARLY = 100
+EARLY_TOL = 1.0e-12
+LATE_TOL = 1.0e-8
+
+SCENES = {
+    "cube_tension": ("tension_cube", "in.tension_cube",
+                     {"n": 5, "grips": "free", "load": "tension"}),
+    "cube_shear": ("tension_cube", "in.tension_cube",
+                   {"n": 5, "grips": "clamped", "load": "shear"}),
+    "wave_bar": ("waves", "in.wave", {"m": 10, "pol": "p"}),
+    "box_shear": ("tension_cube", "in.shear_box", {"erate": 2.5}),
+}
+
+MODES = {
+    "cpu": (1, ()),
+    "kk1": (1, ("-k", "on", "t", "1", "-sf", "kk")),
+    "kk2": (1, ("-k", "on", "t", "2", "-sf", "kk")),
+    "kk_mpi2": (2, ("-k", "on", "t", "1", "-sf", "kk")),
+}
+
+DUMP = """
+compute         mcaprop all property/atom smean sxx syy szz sxy sxz syz
+variable        dumpnext equal "(step < {early})*(step + 1) + (step >= {early})*(step + {early})"
+dump            cmp all custom 1 cmp.dump id xu yu zu ix iy iz vx vy vz fx fy fz &
+                omegax omegay omegaz tqx tqy tqz c_mcaprop[*]
+dump_modify     cmp format float %.17g sort id every v_dumpnext
+""".format(early=EARLY)
+
+
+def kokkos_build():
+    build = build_named("kokkos")
+    if build is None:
+        pytest.skip("the kokkos build is not among the tested builds")
+    return build
+
+
+@functools.lru_cache(maxsize=None)
+def run_scene(scene, mode, workdir):
+    """Run a scene in a mode once per session; snapshots by timestep."""
+    build = kokkos_build()
+    example, script, variables = SCENES[scene]
+    nprocs, args = MODES[mode]
+    directory = pathlib.Path(workdir) / scene / mode
+    directory.mkdir(parents=True, exist_ok=True)
+    (directory / "extra_cmds").write_text(DUMP)
+    variables = dict(variables, nsteps=NSTEPS, extra="extra_cmds")
+    text = (EXAMPLES / example / script).read_text()
+    build.run(text, directory, nprocs=nprocs, variables=variables, extra_args=args,
+              name=script)
+    snapshots = read_dump(directory / "cmp.dump")
+    return {snap["timestep"]: snap for snap in snapshots}
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory):
+    return str(tmp_path_factory.mktemp("kokkos"))
+
+
+def stack(snap, names, order):
+    return np.stack([snap[n][order] for n in names], axis=1)
+
+
+def fields(snap, first, order, first_order):
+    """Compared quantities of a snapshot, rows in the order given."""
+    u = stack(snap, ("xu", "yu", "zu"), order) - stack(first, ("xu", "yu", "zu"), first_order)
+    return {
+        "displacement": u,
+        "velocity": stack(snap, ("vx", "vy", "vz"), order),
+        "force": stack(snap, ("fx", "fy", "fz"), order),
+        "spin": stack(snap, ("omegax", "omegay", "omegaz"), order),
+        "torque": stack(snap, ("tqx", "tqy", "tqz"), order),
+        "stress": stack(snap, [f"c_mcaprop[{k}]" for k in range(1, 8)], order),
+    }
+
+
+def position_order(run):
+    """Atom rows sorted by initial position (IDs depend on the rank count)."""
+    first = run[min(run)]
+    key = np.round(np.stack([first["xu"], first["yu"], first["zu"]], axis=1) / A, 6)
+    return np.lexsort(key.T[::-1])
+
+
+def scales(reference):
+    """Natural magnitude of each field over the whole reference run."""
+    order = np.arange(len(reference[min(reference)]["id"]))
+    first = reference[min(reference)]
+    peak = {}
+    for snap in reference.values():
+        for name, value in fields(snap, first, order, order).items():
+            peak[name] = max(peak.get(name, 0.0), float(np.abs(value).max()))
+    link_force = peak["stress"] * (2 * RADIUS) ** 2
+    velocity = max(peak["velocity"], peak["stress"] / (RHO * C_P))
+    return {
+        "displacement": peak["displacement"],
+        "velocity": velocity,
+        "spin": velocity / RADIUS,
+        "force": link_force,
+        "torque": link_force * RADIUS,
+        "stress": peak["stress"],
+    }
+
+
+def late_tolerance(reference):
+    """1e-8, or 128 ulp of the coordinates per peak displacement."""
+    first = reference[min(reference)]
+    extent = max(float(np.abs(first[c]).max()) for c in ("xu", "yu", "zu"))
+    return max(LATE_TOL, 128 * np.spacing(extent) / scales(reference)["displacement"])
+
+
+def compare(reference, other, by_position=False):
+    """Worst scaled difference of each field up to step EARLY and after it."""
+    scale = scales(reference)
+    if by_position:
+        ref_order, other_order = position_order(reference), position_order(other)
+    else:
+        ref_order = other_order = np.arange(len(reference[min(reference)]["id"]))
+    first_ref, first_other = reference[min(reference)], other[min(other)]
+    worst = {"early": {}, "late": {}}
+    assert sorted(reference) == sorted(other)
+    for step in sorted(reference):
+        a = fields(reference[step], first_ref, ref_order, ref_order)
+        b = fields(other[step], first_other, other_order, other_order)
+        stage = worst["early" if step <= EARLY else "late"]
+        for name in a:
+            diff = float(np.abs(a[name] - b[name]).max()) / scale[name]
+            stage[name] = max(stage.get(name, 0.0), diff)
+    return worst
+
+
+def report(scene, what, worst):
+    text = ", ".join(f"{k} {v:.1e}" for k, v in sorted(worst["early"].items()))
+    late = ", ".join(f"{k} {v:.1e}" for k, v in sorted(worst["late"].items()))
+    print(f"\n{scene} {what}: steps <= {EARLY}: {text}\n   after: {late}")
+
+
+@pytest.mark.parametrize("scene", sorted(SCENES))
+@pytest.mark.parametrize("mode", ["kk1", "kk2"])
+def test_kk_matches_cpu(scene, mode, workdir):
+    reference = run_scene(scene, "cpu", workdir)
+    other = run_scene(scene, mode, workdir)
+    worst = compare(reference, other)
+    report(scene, f"{mode} vs cpu", worst)
+    for name, value in worst["early"].items():
+        assert value <= EARLY_TOL, f"{name} differs by {value:.2e} before step {EARLY}"
+    tolerance = late_tolerance(reference)
+    for name, value in worst["late"].items():
+        assert value <= tolerance, f"{name} differs by {value:.2e} after step {EARLY}"
+
+
+@pytest.mark.parametrize("scene", sorted(SCENES))
+def test_kk_threads_identical(scene, workdir):
+    """The deterministic gather gives the same bits on 1 and 2 threads."""
+    one = run_scene(scene, "kk1", workdir)
+    two = run_scene(scene, "kk2", workdir)
+    assert sorted(one) == sorted(two)
+    for step in one:
+        for name in one[step]:
+            if name in ("timestep", "box"):
+                continue
+            assert np.array_equal(one[step][name], two[step][name]), (step, name)
+
+
+@pytest.mark.parametrize("scene", sorted(SCENES))
+def test_kk_mpi_ranks(scene, workdir):
+    """2 ranks x 1 thread against 1 rank x 1 thread (both kk)."""
+    reference = run_scene(scene, "kk1", workdir)
+    other = run_scene(scene, "kk_mpi2", workdir)
+    worst = compare(reference, other, by_position=True)
+    report(scene, "kk 2 ranks vs kk 1 rank", worst)
+    for name, value in worst["early"].items():
+        assert value <= EARLY_TOL, f"{name} differs by {value:.2e} before step {EARLY}"
+    tolerance = late_tolerance(reference)
+    for name, value in worst["late"].items():
+        assert value <= tolerance, f"{name} differs by {value:.2e} after step {EARLY}"
+
+
+# ---------------------------------------------------------------------------
+# links that migrate between ranks, and restart files across the variants
+
+@pytest.mark.mpi
+def test_kk_links_migrate_between_ranks(tmp_path):
+    """The flight of test_pair_mca.test_links_migrate_between_ranks (a
+    vibrating cluster crossing ranks and the periodic boundary at 100 m/s,
+    reneighbouring every step or two) with the kk styles on 2 ranks x 1
+    thread and on 1 rank x 2 threads, against the CPU styles on 1 rank, with
+    the tolerances of that test (round-off of the periodic images)."""
+    from test_pair_mca import MIGRATE, assert_same_flight, migrate_final
+
+    build = kokkos_build()
+    _, cpu = migrate_final(build, tmp_path / "cpu", MIGRATE, 1)
+    for name, nprocs, threads in (("mpi2", 2, "1"), ("threads2", 1, "2")):
+        directory = tmp_path / name
+        build.run(MIGRATE, directory, nprocs=nprocs,
+                  extra_args=("-k", "on", "t", threads, "-sf", "kk"))
+        snapshots = read_dump(directory / "states.dump")
+        first, last = snapshots[0], snapshots[-1]
+        assert last["timestep"] == 3000
+        order = np.lexsort(np.round([first["z"], first["y"], first["x"]], 6))
+        kk = {n: last[n][order] for n in last if n not in ("timestep", "box", "id")}
+        assert_same_flight(cpu, kk)
+
+
+CONTINUE = """
+read_restart    half.restart
+pair_style      mca
+pair_coeff      * * E 70.0e9 nu 0.3 rho 2700
+fix             integrate all nve/mca
+include         extra_cmds
+run             50
+"""
+
+
+def continue_from(build, directory, restart, mode):
+    directory.mkdir(exist_ok=True)
+    (directory / "half.restart").write_bytes(restart.read_bytes())
+    (directory / "extra_cmds").write_text(DUMP.replace("every v_dumpnext", "every 1"))
+    return build.run(CONTINUE, directory, extra_args=MODES[mode][1], name="in.continue",
+                     check=False)
+
+
+def test_kk_reads_cpu_restart_file(tmp_path):
+    """A restart file of a CPU run continues with the kk styles: the link
+    rows come back (the internal fix has one style name for both variants)
+    and 50 steps agree with the CPU continuation to the per-step tolerance."""
+    build = kokkos_build()
+    text = (EXAMPLES / "tension_cube" / "in.shear_box").read_text()
+    text += "write_restart   half.restart\n"
+    build.run(text, tmp_path, variables={"nsteps": 200}, name="in.shear_box")
+    runs = {}
+    for mode in ("cpu", "kk1"):
+        result = continue_from(build, tmp_path / mode, tmp_path / "half.restart", mode)
+        assert result.returncode == 0, result.stdout[-2000:]
+        log = (tmp_path / mode / "log.lammps").read_text()
+        assert "links made" not in log, "the links were made again instead of read"
+        runs[mode] = {s["timestep"]: s for s in read_dump(tmp_path / mode / "cmp.dump")}
+    assert max(runs["cpu"]) == 250
+    worst = compare(runs["cpu"], runs["kk1"])
+    report("restarted box", "kk1 vs cpu", worst)
+    # 50 steps (200 .. 250): the per-step tolerance
+    for name, value in {**worst["early"], **worst["late"]}.items():
+        assert value <= EARLY_TOL, name
+
+
+def test_cpu_run_rejects_kk_restart_file(tmp_path):
+    """LAMMPS 2021 writes the style names with their suffix: a restart file
+    of a kk run names atom_style mca/kk, which a run without -k on cannot
+    build.  It stops with an error that says how to read it (no crash)."""
+    build = kokkos_build()
+    text = (EXAMPLES / "tension_cube" / "in.shear_box").read_text()
+    text += "write_restart   half.restart\n"
+    build.run(text, tmp_path, variables={"nsteps": 20}, extra_args=MODES["kk1"][1],
+              name="in.shear_box")
+    result = continue_from(build, tmp_path / "cpu", tmp_path / "half.restart", "cpu")
+    output = result.stdout + result.stderr
+    assert result.returncode != 0
+    assert "Atom style mca/kk requires the KOKKOS package" in output, output[-2000:]
+    assert "-k on -sf kk" in output
+    result = continue_from(build, tmp_path / "kk1", tmp_path / "half.restart", "kk1")
+    assert result.returncode == 0, result.stdout[-2000:]
