@@ -35,8 +35,18 @@
 using namespace LAMMPS_NS;
 using namespace MCAKernels;
 
-// doubles per slot of the result buffer
-enum ResultSlot { R_FORCE = 0, R_TORQUE = 3, R_TRACTION = 6, R_NORMAL = 9, R_WORK = 12, R_SIZE };
+// doubles per slot of the result buffer: what the partner needs of the
+// link pass (force and torque on it, traction and normal for its stress,
+// energy), and the predictor record of the link for the next step
+enum ResultSlot {
+  R_FORCE = 0,
+  R_TORQUE = 3,
+  R_TRACTION = 6,
+  R_NORMAL = 9,
+  R_WORK = 12,
+  R_PREDICTOR = 13,
+  R_SIZE = R_PREDICTOR + P_SIZE
+};
 
 namespace LAMMPS_NS {
 
@@ -149,22 +159,29 @@ template <class DeviceType> struct MCACountLinks {
 template <class DeviceType> struct MCAPredictor {
   typedef DeviceType device_type;
   MCAPairViews<DeviceType> d;
-  bool setup_pass;
+  bool setup_pass, slots_current;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double mstrain[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     for (int m = 0; m < d.nlinks(i); m++) {
-      const double *h = d.current_row(i, m);
-      if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
       const int j = d.partner(i, m);
+      const bool ilo = d.tag(i) < d.tag(j);
+      // the record of a link computed by the local partner: from the slot
+      // it filled at the last step if that is current, else from its row
+      double own[P_SIZE];
+      const double *rec = own;
+      if (slots_current && j < d.nlocal && !ilo)
+        rec = &d.result(j, d.row(i, m) * R_SIZE + R_PREDICTOR);
+      else
+        predictor_record(d.current_row(i, m), own);
+      if (static_cast<int>(rec[P_STATE]) != LINK_LINKED) continue;
       const double del[3] = {d.x(j, 0) - d.x(i, 0), d.x(j, 1) - d.x(i, 1), d.x(j, 2) - d.x(i, 2)};
       double nn[6];
-      const double dr = link_direction(del, nn) - h[H_RPREV];
-      const bool ilo = d.tag(i) < d.tag(j);
+      const double dr = link_direction(del, nn) - rec[P_RPREV];
       predictor_add(fab, mstrain, nn,
-                    link_half_strain(h, ilo, d.pred_stiffness(i), d.pred_stiffness(j), dr));
+                    link_half_strain(rec, ilo, d.pred_stiffness(i), d.pred_stiffness(j), dr));
     }
     for (int k = 0; k < 6; k++) d.fabric(i, k) = fab[k];
     const bool interacting = d.link_count(i) > 0 && d.packing(i) != PACKING_NONE;
@@ -195,12 +212,17 @@ template <class DeviceType> struct MCALinkPass {
     double eatom = 0.0, vatom[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 
     for (int m = 0; m < d.nlinks(i); m++) {
-      double *row = &d.history(i, m * H_SIZE);
-      if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
       const int j = d.partner(i, m);
       const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       if (jlocal && !ilo) continue;    // the partner computes it
+      double *row = &d.history(i, m * H_SIZE);
+      if (static_cast<int>(row[H_STATE]) != LINK_LINKED) {
+        // the partner adds its slot unconditionally: nothing
+        if (jlocal)
+          for (int k = 0; k < R_SIZE; k++) d.result(i, m * R_SIZE + k) = 0.0;
+        continue;
+      }
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       const int tlo = d.type(lo), thi = d.type(hi);
 
@@ -231,7 +253,7 @@ template <class DeviceType> struct MCALinkPass {
       traction_add(bmat, trac, nvec);
 
       if (jlocal) {
-        double *slot = &d.result(j, d.row(i, m) * R_SIZE);
+        double *slot = &d.result(i, m * R_SIZE);
         for (int k = 0; k < 3; k++) {
           slot[R_FORCE + k] = -fpair[k];
           slot[R_TORQUE + k] = tq_hi[k];
@@ -239,6 +261,7 @@ template <class DeviceType> struct MCALinkPass {
           slot[R_NORMAL + k] = nvec[k];
         }
         slot[R_WORK] = h[H_WORK];
+        predictor_record(h, slot + R_PREDICTOR);
         if (commit && eager) {
           double *partner_row = &d.history(j, d.row(i, m) * H_SIZE);
           for (int k = 0; k < H_SIZE; k++) partner_row[k] = row[k];
@@ -294,8 +317,8 @@ template <class DeviceType> struct MCAGatherStress {
     for (int m = 0; m < d.nlinks(i); m++) {
       const int j = d.partner(i, m);
       if (!(j < d.nlocal && d.tag(j) < d.tag(i))) continue;
-      if (static_cast<int>(d.current_row(i, m)[H_STATE]) != LINK_LINKED) continue;
-      const double *slot = &d.result(i, m * R_SIZE);
+      // filled by the partner this step (zero for a link that does not act)
+      const double *slot = &d.result(j, d.row(i, m) * R_SIZE);
       for (int k = 0; k < 3; k++) {
         fsum[k] += slot[R_FORCE + k];
         tsum[k] += slot[R_TORQUE + k];
@@ -390,7 +413,7 @@ template <class DeviceType> struct MCAUnpackForward {
 template <class DeviceType>
 PairMCAKokkos<DeviceType>::PairMCAKokkos(LAMMPS *lmp) :
     PairMCA(lmp), avecKK(nullptr), linksKK(nullptr), kk_nmax(0), result_rows(0), result_cols(0),
-    pack_iswap(0)
+    slots_current(false)
 {
   MCAKokkos::require_kokkos(lmp, "Pair style mca/kk");
   kokkosable = 1;
@@ -486,6 +509,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
     d_result = MCAKokkos::double_2d<DeviceType>(
         Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:result"), result_rows,
         result_cols * R_SIZE);
+    slots_current = false;
   }
 }
 
@@ -632,6 +656,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::predict_mean_stress(
   MCAPredictor<DeviceType> predictor;
   predictor.d = views();
   predictor.setup_pass = (update->setupflag != 0);
+  predictor.slots_current = slots_current;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), predictor);
   forward_comm_stage(STAGE_MEAN);
 }
@@ -671,6 +696,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     k_row_cache.template sync<DeviceType>();
     linksKK->to_device();
     count_links_kk();
+    slots_current = false;    // the slots belong to the old order of the atoms
   }
   linksKK->to_device();
 
@@ -702,6 +728,9 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
 
   linksKK->device_changed();
   if (commit && lazy) partner_rows_stale = 1;
+  // the slots hold the records of this step's committed rows (a setup
+  // worked on copies)
+  slots_current = commit;
 
   if (eflag_global) eng_vdwl += sums.energy;
   if (vflag_global)

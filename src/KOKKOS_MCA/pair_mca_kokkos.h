@@ -37,9 +37,9 @@ template <class DeviceType> struct MCAPairViews;
    Race-free without atomics, and deterministic (the same bits for any
    number of threads): a link between two local automata is computed
    once, by the lower ID, which updates its row and writes what the
-   partner needs (force, torque, traction) into the partner's slot of a
-   result buffer; a second kernel lets every automaton gather its slots
-   in row order.  A link to a ghost atom is computed by its local owner.
+   partner needs (force, torque, traction) into the slot of that row in a
+   result buffer; a second kernel lets every automaton gather the slots of
+   its lower-ID partners, in the order of its own rows.  A link to a ghost atom is computed by its local owner.
    Only the owner of an automaton writes its force, torque, stress and
    energy.  The predictor and the link counts are sums over the rows of
    each automaton (each owner reads the current copy of the row).
@@ -76,8 +76,9 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
   // per local automaton
   MCAKokkos::int_1d<DeviceType> d_link_count;
   MCAKokkos::double_2d<DeviceType> d_fabric, d_bmat;
-  // what the lower ID of a local link leaves for its partner, by the
-  // partner's row: force and torque on it, traction, normal, energy
+  // what the lower ID of a local link leaves for its partner, by its own
+  // row: force and torque on the partner, traction, normal, energy, and
+  // the link's predictor record for the next step
   MCAKokkos::double_2d<DeviceType> d_result;
   // the caches of the base class, in DualViews
   MCAKokkos::dual_int_2d k_partner_cache, k_row_cache;
@@ -88,7 +89,9 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
   MCAKokkos::dual_double_2d k_vatom;
 
   int kk_nmax, result_rows, result_cols;
-  int pack_iswap;
+  // the result buffer holds the predictor records of the last committed
+  // step in the current order of the atoms
+  bool slots_current;
 
   void grow_kk_peratom();
   void count_links_kk();

@@ -310,3 +310,51 @@ def test_cpu_run_rejects_kk_restart_file(tmp_path):
     assert "-k on -sf kk" in output
     result = continue_from(build, tmp_path / "kk1", tmp_path / "half.restart", "kk1")
     assert result.returncode == 0, result.stdout[-2000:]
+
+
+# ---------------------------------------------------------------------------
+# bad input on the kk path: clear errors, no silent fallback
+
+BAD_BASE = """
+units           si
+atom_style      mca
+atom_modify     map array
+lattice         fcc 0.7184
+region          b block 0 2 0 2 0 2
+create_box      1 b
+create_atoms    1 box
+comm_modify     vel yes
+"""
+
+BAD_CASES = {
+    # a Kokkos style in a run without the KOKKOS package enabled
+    "pair_without_kokkos": (
+        BAD_BASE + "pair_style mca/kk\npair_coeff * * E 70e9 nu 0.3 rho 2700\nrun 0\n", (),
+        "Pair style mca/kk requires the KOKKOS package enabled with the command-line "
+        "switch '-k on'"),
+    "fix_without_kokkos": (
+        BAD_BASE + "pair_style mca\npair_coeff * * E 70e9 nu 0.3 rho 2700\n"
+        "fix 1 all nve/mca/kk\nrun 0\n", (),
+        "Fix nve/mca/kk requires the KOKKOS package enabled"),
+    # -k on without -sf kk: the plain atom style cannot run on the Kokkos path
+    "kokkos_with_plain_atom_style": (
+        BAD_BASE + "pair_style mca\npair_coeff * * E 70e9 nu 0.3 rho 2700\nrun 0\n",
+        ("-k", "on", "t", "1"), "KOKKOS package requires a kokkos enabled atom_style"),
+    # links made by the CPU pair style, continued by the kk one in the same run
+    "mixed_variants": (
+        BAD_BASE + "suffix off\npair_style mca\npair_coeff * * E 70e9 nu 0.3 rho 2700\n"
+        "run 0\npair_style mca/kk\npair_coeff * * E 70e9 nu 0.3 rho 2700\nrun 0\n",
+        ("-k", "on", "t", "1", "-sf", "kk"),
+        "the links of this system were made by pair_style mca without the Kokkos suffix"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_CASES))
+def test_kk_bad_input(tmp_path, case):
+    build = kokkos_build()
+    script, args, message = BAD_CASES[case]
+    result = build.run(script, tmp_path, extra_args=args, check=False)
+    output = result.stdout + result.stderr
+    assert result.returncode != 0, f"{case}: LAMMPS did not stop"
+    assert "ERROR" in output and message in output, output[-1500:]
+    assert "Segmentation" not in output and "signal" not in output.lower()
