@@ -48,6 +48,8 @@ namespace MCAKokkos {
   template <class DeviceType> using double_1d = Kokkos::View<double *, DeviceType>;
   template <class DeviceType>
   using double_2d = Kokkos::View<double **, Kokkos::LayoutRight, DeviceType>;
+  template <class DeviceType>
+  using double_3d = Kokkos::View<double ***, Kokkos::LayoutRight, DeviceType>;
   template <class DeviceType> using int_1d = Kokkos::View<int *, DeviceType>;
   template <class DeviceType> using int_2d = Kokkos::View<int **, Kokkos::LayoutRight, DeviceType>;
 

@@ -35,18 +35,13 @@
 using namespace LAMMPS_NS;
 using namespace MCAKernels;
 
-// doubles per slot of the result buffer: what the partner needs of the
-// link pass (force and torque on it, traction and normal for its stress,
-// energy), and the predictor record of the link for the next step
-enum ResultSlot {
-  R_FORCE = 0,
-  R_TORQUE = 3,
-  R_TRACTION = 6,
-  R_NORMAL = 9,
-  R_WORK = 12,
-  R_PREDICTOR = 13,
-  R_SIZE = R_PREDICTOR + P_SIZE
-};
+// per-automaton sums of the two link passes, accumulated in ScatterViews
+// (columns): the predictor's fabric tensor F and strain moment M, and the
+// link pass's force, torque and traction moment B (see PairMCA)
+enum PredictorSum { PS_FABRIC = 0, PS_STRAIN = 6, PS_SIZE = 12 };
+enum LinkSum { LS_FORCE = 0, LS_TORQUE = 3, LS_BMAT = 6, LS_SIZE = 15 };
+// per-atom energy and virial, when asked for
+enum AtomTally { AT_ENERGY = 0, AT_VIRIAL = 1, AT_SIZE = 7 };
 
 namespace LAMMPS_NS {
 
@@ -78,7 +73,7 @@ template <class DeviceType> struct MCAPairViews {
 
   double_1d pred_stiffness, dsmean, smean_pred;
   int_1d link_count;
-  double_2d fabric, bmat, result;
+  double_2d fabric, predictor_sums, link_sums, atom_tally;
   double_1d shear, bulk, coupling;
   double_1d eatom;
   double_2d vatom;
@@ -153,36 +148,135 @@ template <class DeviceType> struct MCACountLinks {
 };
 
 /* ----------------------------------------------------------------------
-   kernel: the mean-stress predictor of each automaton
+   where a kernel adds what a link gives its two automata: the automaton
+   it runs for (own) and a local partner.  DirectSums: into the sums
+   themselves, in the loop order (one host thread: the order of the CPU
+   style; GPU: atomic).  ThreadSums (several host threads): the own part
+   in registers, stored once per automaton; the partner part into one copy
+   per thread, added by the kernel that reads the sums (load_sums).
 ------------------------------------------------------------------------- */
 
-template <class DeviceType> struct MCAPredictor {
+template <class DeviceType> struct MCADirectSums {
+  typename MCAScatter<DeviceType>::direct sums;
+  typedef decltype(sums.access()) Thread;
+
+  KOKKOS_INLINE_FUNCTION Thread begin(int) const { return sums.access(); }
+  KOKKOS_INLINE_FUNCTION void own(Thread &add, int i, int k, double value) const
+  {
+    add(i, k) += value;
+  }
+  KOKKOS_INLINE_FUNCTION void partner(Thread &add, int j, int k, double value) const
+  {
+    add(j, k) += value;
+  }
+  KOKKOS_INLINE_FUNCTION void end(Thread &, int) const {}
+};
+
+template <class DeviceType, int N> struct MCAThreadSums {
+  MCAKokkos::double_2d<DeviceType> sums;
+  MCAKokkos::double_3d<DeviceType> copies;
+  Kokkos::Experimental::UniqueToken<typename DeviceType::execution_space> token;
+  struct Thread {
+    double mine[N];
+    int copy;
+  };
+
+  KOKKOS_INLINE_FUNCTION Thread begin(int) const
+  {
+    Thread thread;
+    for (int k = 0; k < N; k++) thread.mine[k] = 0.0;
+    thread.copy = token.acquire();
+    return thread;
+  }
+  KOKKOS_INLINE_FUNCTION void own(Thread &thread, int, int k, double value) const
+  {
+    thread.mine[k] += value;
+  }
+  KOKKOS_INLINE_FUNCTION void partner(Thread &thread, int j, int k, double value) const
+  {
+    copies(thread.copy, j, k) += value;
+  }
+  KOKKOS_INLINE_FUNCTION void end(Thread &thread, int i) const
+  {
+    for (int k = 0; k < N; k++) sums(i, k) = thread.mine[k];
+    token.release(thread.copy);
+  }
+};
+
+// an automaton's sums: its own part plus the copies of all threads
+// (none with DirectSums), which are left zero for the next kernel
+template <class DeviceType>
+KOKKOS_INLINE_FUNCTION void load_sums(const MCAKokkos::double_2d<DeviceType> &sums,
+                                      const MCAKokkos::double_3d<DeviceType> &copies, int i,
+                                      double *out)
+{
+  const int n = sums.extent(1);
+  for (int k = 0; k < n; k++) out[k] = sums(i, k);
+  for (int t = 0; t < static_cast<int>(copies.extent(0)); t++)
+    for (int k = 0; k < n; k++) {
+      out[k] += copies(t, i, k);
+      copies(t, i, k) = 0.0;
+    }
+}
+
+/* ----------------------------------------------------------------------
+   kernel: the links of the mean-stress predictor, each computed once, by
+   the lower ID of two local automata or by the local owner of a link to
+   a ghost atom (whose rows are current), added to both local automata
+------------------------------------------------------------------------- */
+
+template <class DeviceType, class Sums> struct MCAPredictorLinks {
   typedef DeviceType device_type;
   MCAPairViews<DeviceType> d;
-  bool setup_pass, slots_current;
+  Sums sums;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
-    double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double mstrain[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
       const int j = d.partner(i, m);
+      const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
-      // the record of a link computed by the local partner: from the slot
-      // it filled at the last step if that is current, else from its row
-      double own[P_SIZE];
-      const double *rec = own;
-      if (slots_current && j < d.nlocal && !ilo)
-        rec = &d.result(j, d.row(i, m) * R_SIZE + R_PREDICTOR);
-      else
-        predictor_record(d.current_row(i, m), own);
-      if (static_cast<int>(rec[P_STATE]) != LINK_LINKED) continue;
+      if (jlocal && !ilo) continue;
+      const double *h = &d.history(i, m * H_SIZE);
+      if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
       const double del[3] = {d.x(j, 0) - d.x(i, 0), d.x(j, 1) - d.x(i, 1), d.x(j, 2) - d.x(i, 2)};
-      double nn[6];
+      double nn[6], rec[P_SIZE];
+      predictor_record(h, rec);
       const double dr = link_direction(del, nn) - rec[P_RPREV];
-      predictor_add(fab, mstrain, nn,
-                    link_half_strain(rec, ilo, d.pred_stiffness(i), d.pred_stiffness(j), dr));
+      const double h_i = d.pred_stiffness(i), h_j = d.pred_stiffness(j);
+      const double de_i = link_half_strain(rec, ilo, h_i, h_j, dr);
+      for (int k = 0; k < 6; k++) {
+        sums.own(add, i, PS_FABRIC + k, nn[k]);
+        sums.own(add, i, PS_STRAIN + k, de_i * nn[k]);
+      }
+      if (jlocal) {
+        const double de_j = link_half_strain(rec, !ilo, h_j, h_i, dr);
+        for (int k = 0; k < 6; k++) {
+          sums.partner(add, j, PS_FABRIC + k, nn[k]);
+          sums.partner(add, j, PS_STRAIN + k, de_j * nn[k]);
+        }
+      }
     }
+    sums.end(add, i);
+  }
+};
+
+/* ----------------------------------------------------------------------
+   kernel: the mean stress each automaton's normal law applies this step
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct MCAPredictorFinish {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  MCAKokkos::double_3d<DeviceType> copies;
+  bool setup_pass;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    double sums[PS_SIZE];
+    load_sums(d.predictor_sums, copies, i, sums);
+    const double *fab = sums + PS_FABRIC, *mstrain = sums + PS_STRAIN;
     for (int k = 0; k < 6; k++) d.fabric(i, k) = fab[k];
     const bool interacting = d.link_count(i) > 0 && d.packing(i) != PACKING_NONE;
     double smean_pred, dsmean;
@@ -194,35 +288,30 @@ template <class DeviceType> struct MCAPredictor {
 };
 
 /* ----------------------------------------------------------------------
-   kernel: the links each automaton computes (to a ghost atom, or to a
-   local automaton of higher ID): tractions, forces, torques, history
+   kernel: the links, each computed once as in the predictor: tractions,
+   forces, torques and history; force, torque and traction moment added
+   to both local automata
 ------------------------------------------------------------------------- */
 
-template <class DeviceType> struct MCALinkPass {
+template <class DeviceType, class Sums, class TallyScatter> struct MCALinkPass {
   typedef DeviceType device_type;
   typedef MCALinkSums value_type;
   MCAPairViews<DeviceType> d;
+  Sums sums;
+  TallyScatter tally;
   bool commit, eager, eflag_global, vflag_global, eflag_atom, vflag_atom;
   double dt, cutsq;
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i, MCALinkSums &sums) const
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, MCALinkSums &ev) const
   {
-    double fsum[3] = {0.0, 0.0, 0.0}, tsum[3] = {0.0, 0.0, 0.0};
-    double bmat[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    double eatom = 0.0, vatom[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-
+    auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
       const int j = d.partner(i, m);
       const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       if (jlocal && !ilo) continue;    // the partner computes it
       double *row = &d.history(i, m * H_SIZE);
-      if (static_cast<int>(row[H_STATE]) != LINK_LINKED) {
-        // the partner adds its slot unconditionally: nothing
-        if (jlocal)
-          for (int k = 0; k < R_SIZE; k++) d.result(i, m * R_SIZE + k) = 0.0;
-        continue;
-      }
+      if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       const int tlo = d.type(lo), thi = d.type(hi);
 
@@ -242,107 +331,80 @@ template <class DeviceType> struct MCALinkPass {
                   d.coupling(thi), d.bulk(tlo), d.bulk(thi), d.dsmean(lo), d.dsmean(hi),
                   d.smean_pred(lo), d.smean_pred(hi), face_moment_factor(d.packing(lo)), dt, fpair,
                   tq_lo, tq_hi, sig, trac, r, nvec);
-      if (r * r > cutsq) sums.nlong += jlocal ? 2 : 1;
+      if (r * r > cutsq) ev.nlong += jlocal ? 2 : 1;
 
+      // force on lo is fpair, on hi -fpair; T n^T is the same for both
       const double sign = ilo ? 1.0 : -1.0;
       const double *tq = ilo ? tq_lo : tq_hi;
       for (int k = 0; k < 3; k++) {
-        fsum[k] += sign * fpair[k];
-        tsum[k] += tq[k];
+        sums.own(add, i, LS_FORCE + k, sign * fpair[k]);
+        sums.own(add, i, LS_TORQUE + k, tq[k]);
       }
-      traction_add(bmat, trac, nvec);
-
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) sums.own(add, i, LS_BMAT + 3 * a + b, trac[a] * nvec[b]);
       if (jlocal) {
-        double *slot = &d.result(i, m * R_SIZE);
         for (int k = 0; k < 3; k++) {
-          slot[R_FORCE + k] = -fpair[k];
-          slot[R_TORQUE + k] = tq_hi[k];
-          slot[R_TRACTION + k] = trac[k];
-          slot[R_NORMAL + k] = nvec[k];
+          sums.partner(add, j, LS_FORCE + k, -fpair[k]);
+          sums.partner(add, j, LS_TORQUE + k, tq_hi[k]);
         }
-        slot[R_WORK] = h[H_WORK];
-        predictor_record(h, slot + R_PREDICTOR);
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) sums.partner(add, j, LS_BMAT + 3 * a + b, trac[a] * nvec[b]);
         if (commit && eager) {
           double *partner_row = &d.history(j, d.row(i, m) * H_SIZE);
           for (int k = 0; k < H_SIZE; k++) partner_row[k] = row[k];
         }
       }
 
-      // energy and virial: the whole pair, or this owner's half of it
+      // energy and virial: the whole pair, or this owner's half of it;
+      // per atom, each automaton of the pair gets half (as ev_tally_xyz)
       const double share = jlocal ? 1.0 : 0.5;
-      if (eflag_global) sums.energy += share * h[H_WORK];
-      if (eflag_atom) eatom += 0.5 * h[H_WORK];
+      if (eflag_global) ev.energy += share * h[H_WORK];
+      double v[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
       if (vflag_global || vflag_atom) {
         const double del[3] = {d.x(i, 0) - d.x(j, 0), d.x(i, 1) - d.x(j, 1), d.x(i, 2) - d.x(j, 2)};
-        const double fi[3] = {share * sign * fpair[0], share * sign * fpair[1],
-                              share * sign * fpair[2]};
-        double v[6];
+        const double fi[3] = {sign * fpair[0], sign * fpair[1], sign * fpair[2]};
         pair_virial(del, fi, v);
-        for (int k = 0; k < 6; k++) {
-          if (vflag_global) sums.virial[k] += v[k];
-          // per atom: half of the whole pair's virial
-          if (vflag_atom) vatom[k] += (jlocal ? 0.5 : 1.0) * v[k];
+        if (vflag_global)
+          for (int k = 0; k < 6; k++) ev.virial[k] += share * v[k];
+      }
+      if (eflag_atom || vflag_atom) {
+        auto tally_add = tally.access();
+        for (int n = 0; n < (jlocal ? 2 : 1); n++) {
+          const int owner = n ? j : i;
+          tally_add(owner, AT_ENERGY) += 0.5 * h[H_WORK];
+          for (int k = 0; k < 6; k++) tally_add(owner, AT_VIRIAL + k) += 0.5 * v[k];
         }
       }
     }
-
-    for (int k = 0; k < 3; k++) {
-      d.f(i, k) += fsum[k];
-      d.torque(i, k) += tsum[k];
-    }
-    for (int k = 0; k < 9; k++) d.bmat(i, k) = bmat[k];
-    if (eflag_atom) d.eatom(i) += eatom;
-    if (vflag_atom)
-      for (int k = 0; k < 6; k++) d.vatom(i, k) += vatom[k];
+    sums.end(add, i);
   }
 };
 
 /* ----------------------------------------------------------------------
-   kernel: each automaton gathers what its lower-ID local partners left
-   for it, then sets its stress
+   kernel: each automaton's forces, torques and stress from its sums
 ------------------------------------------------------------------------- */
 
-template <class DeviceType> struct MCAGatherStress {
+template <class DeviceType> struct MCALinkFinish {
   typedef DeviceType device_type;
   MCAPairViews<DeviceType> d;
+  MCAKokkos::double_3d<DeviceType> copies;
   bool commit, eflag_atom, vflag_atom;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
-    double fsum[3] = {0.0, 0.0, 0.0}, tsum[3] = {0.0, 0.0, 0.0};
-    double bmat[9];
-    for (int k = 0; k < 9; k++) bmat[k] = d.bmat(i, k);
-    double eatom = 0.0, vatom[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-
-    for (int m = 0; m < d.nlinks(i); m++) {
-      const int j = d.partner(i, m);
-      if (!(j < d.nlocal && d.tag(j) < d.tag(i))) continue;
-      // filled by the partner this step (zero for a link that does not act)
-      const double *slot = &d.result(j, d.row(i, m) * R_SIZE);
-      for (int k = 0; k < 3; k++) {
-        fsum[k] += slot[R_FORCE + k];
-        tsum[k] += slot[R_TORQUE + k];
-      }
-      traction_add(bmat, slot + R_TRACTION, slot + R_NORMAL);
-      if (eflag_atom) eatom += 0.5 * slot[R_WORK];
-      if (vflag_atom) {
-        const double del[3] = {d.x(i, 0) - d.x(j, 0), d.x(i, 1) - d.x(j, 1), d.x(i, 2) - d.x(j, 2)};
-        double v[6];
-        pair_virial(del, slot + R_FORCE, v);
-        for (int k = 0; k < 6; k++) vatom[k] += 0.5 * v[k];
-      }
-    }
+    double sums[LS_SIZE];
+    load_sums(d.link_sums, copies, i, sums);
     for (int k = 0; k < 3; k++) {
-      d.f(i, k) += fsum[k];
-      d.torque(i, k) += tsum[k];
+      d.f(i, k) += sums[LS_FORCE + k];
+      d.torque(i, k) += sums[LS_TORQUE + k];
     }
-    if (eflag_atom) d.eatom(i) += eatom;
+    if (eflag_atom) d.eatom(i) += d.atom_tally(i, AT_ENERGY);
     if (vflag_atom)
-      for (int k = 0; k < 6; k++) d.vatom(i, k) += vatom[k];
+      for (int k = 0; k < 6; k++) d.vatom(i, k) += d.atom_tally(i, AT_VIRIAL + k);
 
     double fab[6], stress[6], smean, seq, eeq;
     for (int k = 0; k < 6; k++) fab[k] = d.fabric(i, k);
-    automaton_stress(bmat, fab, d.shear(d.type(i)), stress, smean, seq, eeq);
+    automaton_stress(sums + LS_BMAT, fab, d.shear(d.type(i)), stress, smean, seq, eeq);
     for (int k = 0; k < 6; k++) d.stress(i, k) = stress[k];
     d.smean(i) = smean;
     d.seq(i) = seq;
@@ -412,8 +474,7 @@ template <class DeviceType> struct MCAUnpackForward {
 
 template <class DeviceType>
 PairMCAKokkos<DeviceType>::PairMCAKokkos(LAMMPS *lmp) :
-    PairMCA(lmp), avecKK(nullptr), linksKK(nullptr), kk_nmax(0), result_rows(0), result_cols(0),
-    slots_current(false)
+    PairMCA(lmp), avecKK(nullptr), linksKK(nullptr), kk_nmax(0), tally_nmax(0)
 {
   MCAKokkos::require_kokkos(lmp, "Pair style mca/kk");
   kokkosable = 1;
@@ -501,15 +562,20 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
     memoryKK->create_kokkos(k_smean_pred, smean_pred, kk_nmax, "pair:smean_pred");
     d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nmax);
     d_fabric = MCAKokkos::double_2d<DeviceType>("pair:fabric", kk_nmax, 6);
-    d_bmat = MCAKokkos::double_2d<DeviceType>("pair:bmat", kk_nmax, 9);
+    d_predictor_sums = MCAKokkos::double_2d<DeviceType>("pair:predictor_sums", kk_nmax, PS_SIZE);
+    d_link_sums = MCAKokkos::double_2d<DeviceType>("pair:link_sums", kk_nmax, LS_SIZE);
+    if (need_dup()) {
+      const int copies = typename DeviceType::execution_space().concurrency();
+      d_predictor_copies =
+          MCAKokkos::double_3d<DeviceType>("pair:predictor_copies", copies, kk_nmax, PS_SIZE);
+      d_link_copies =
+          MCAKokkos::double_3d<DeviceType>("pair:link_copies", copies, kk_nmax, LS_SIZE);
+    }
   }
-  if (atom->nmax > result_rows || links->maxlinks > result_cols) {
-    result_rows = atom->nmax;
-    result_cols = links->maxlinks;
-    d_result = MCAKokkos::double_2d<DeviceType>(
-        Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair:result"), result_rows,
-        result_cols * R_SIZE);
-    slots_current = false;
+  if ((eflag_atom || vflag_atom) && atom->nmax > tally_nmax) {
+    tally_nmax = atom->nmax;
+    d_atom_tally = MCAKokkos::double_2d<DeviceType>("pair:atom_tally", tally_nmax, AT_SIZE);
+    if (need_dup()) dup_tally = dup_type(d_atom_tally);
   }
 }
 
@@ -551,8 +617,9 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
   d.smean_pred = k_smean_pred.template view<DeviceType>();
   d.link_count = d_link_count;
   d.fabric = d_fabric;
-  d.bmat = d_bmat;
-  d.result = d_result;
+  d.predictor_sums = d_predictor_sums;
+  d.link_sums = d_link_sums;
+  d.atom_tally = d_atom_tally;
   d.shear = d_shear;
   d.bulk = d_bulk;
   d.coupling = d_coupling;
@@ -653,12 +720,53 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::count_links_kk()
 
 template <class DeviceType> void PairMCAKokkos<DeviceType>::predict_mean_stress()
 {
-  MCAPredictor<DeviceType> predictor;
-  predictor.d = views();
-  predictor.setup_pass = (update->setupflag != 0);
-  predictor.slots_current = slots_current;
-  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), predictor);
+  const int nlocal = atom->nlocal;
+  const MCAPairViews<DeviceType> d = views();
+  if (need_dup()) {
+    MCAPredictorLinks<DeviceType, MCAThreadSums<DeviceType, PS_SIZE>> links_pass;
+    links_pass.d = d;
+    links_pass.sums.sums = d_predictor_sums;
+    links_pass.sums.copies = d_predictor_copies;
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), links_pass);
+  } else {
+    Kokkos::deep_copy(d_predictor_sums, 0.0);
+    MCAPredictorLinks<DeviceType, MCADirectSums<DeviceType>> links_pass;
+    links_pass.d = d;
+    links_pass.sums.sums = direct_type(d_predictor_sums);
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), links_pass);
+  }
+
+  MCAPredictorFinish<DeviceType> finish;
+  finish.d = d;
+  if (need_dup()) finish.copies = d_predictor_copies;
+  finish.setup_pass = (update->setupflag != 0);
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), finish);
   forward_comm_stage(STAGE_MEAN);
+}
+
+/* ----------------------------------------------------------------------
+   one copy of the sums per thread only where threads share them
+------------------------------------------------------------------------- */
+
+template <class DeviceType> bool PairMCAKokkos<DeviceType>::need_dup() const
+{
+  return MCAScatter<DeviceType>::host && typename DeviceType::execution_space().concurrency() > 1;
+}
+
+template <class DeviceType>
+template <class Pass>
+void PairMCAKokkos<DeviceType>::link_pass(Pass &pass, bool commit, bool lazy, MCALinkSums &sums)
+{
+  pass.commit = commit;
+  pass.eager = !lazy;
+  pass.eflag_global = eflag_global;
+  pass.vflag_global = vflag_global;
+  pass.eflag_atom = eflag_atom;
+  pass.vflag_atom = vflag_atom;
+  // spins turn the automata only in steps of a run (see PairMCA::compute)
+  pass.dt = commit ? update->dt : 0.0;
+  pass.cutsq = cut_global * cut_global;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), pass, sums);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -696,7 +804,6 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     k_row_cache.template sync<DeviceType>();
     linksKK->to_device();
     count_links_kk();
-    slots_current = false;    // the slots belong to the old order of the atoms
   }
   linksKK->to_device();
 
@@ -705,32 +812,39 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
 
   predict_mean_stress();
 
-  MCALinkPass<DeviceType> pass;
-  pass.d = views();
-  pass.commit = commit;
-  pass.eager = !lazy;
-  pass.eflag_global = eflag_global;
-  pass.vflag_global = vflag_global;
-  pass.eflag_atom = eflag_atom;
-  pass.vflag_atom = vflag_atom;
-  // spins turn the automata only in steps of a run (see PairMCA::compute)
-  pass.dt = commit ? update->dt : 0.0;
-  pass.cutsq = cut_global * cut_global;
+  const int nlocal = atom->nlocal;
+  const bool atom_tally = eflag_atom || vflag_atom;
+  if (atom_tally) Kokkos::deep_copy(d_atom_tally, 0.0);
+  const MCAPairViews<DeviceType> d = views();
   MCALinkSums sums;
-  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), pass, sums);
+  if (need_dup()) {
+    if (atom_tally) dup_tally.reset();
+    MCALinkPass<DeviceType, MCAThreadSums<DeviceType, LS_SIZE>, dup_type> pass;
+    pass.d = d;
+    pass.sums.sums = d_link_sums;
+    pass.sums.copies = d_link_copies;
+    pass.tally = dup_tally;
+    link_pass(pass, commit, lazy, sums);
+    if (atom_tally) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
+  } else {
+    Kokkos::deep_copy(d_link_sums, 0.0);
+    MCALinkPass<DeviceType, MCADirectSums<DeviceType>, direct_type> pass;
+    pass.d = d;
+    pass.sums.sums = direct_type(d_link_sums);
+    pass.tally = direct_type(d_atom_tally);
+    link_pass(pass, commit, lazy, sums);
+  }
 
-  MCAGatherStress<DeviceType> gather;
-  gather.d = pass.d;
-  gather.commit = commit;
-  gather.eflag_atom = eflag_atom;
-  gather.vflag_atom = vflag_atom;
-  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), gather);
+  MCALinkFinish<DeviceType> finish;
+  finish.d = d;
+  if (need_dup()) finish.copies = d_link_copies;
+  finish.commit = commit;
+  finish.eflag_atom = eflag_atom;
+  finish.vflag_atom = vflag_atom;
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), finish);
 
   linksKK->device_changed();
   if (commit && lazy) partner_rows_stale = 1;
-  // the slots hold the records of this step's committed rows (a setup
-  // worked on copies)
-  slots_current = commit;
 
   if (eflag_global) eng_vdwl += sums.energy;
   if (vflag_global)
@@ -770,8 +884,15 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::sync_link_rows()
 template <class DeviceType> double PairMCAKokkos<DeviceType>::memory_usage()
 {
   double bytes = PairMCA::memory_usage();
-  bytes += (3.0 + 6.0 + 9.0) * kk_nmax * sizeof(double) + kk_nmax * sizeof(int);
-  bytes += (double) result_rows * result_cols * R_SIZE * sizeof(double);
+  // per automaton: 3 communicated values, fabric, the sums of both passes
+  // and their ScatterView copies (one per thread on the host), link count
+  typedef typename DeviceType::memory_space memory_space;
+  const double copies = Kokkos::SpaceAccessibility<Kokkos::HostSpace, memory_space>::accessible
+      ? typename DeviceType::execution_space().concurrency()
+      : 0.0;
+  bytes += (3.0 + 6.0 + (1.0 + (need_dup() ? copies : 0.0)) * (PS_SIZE + LS_SIZE)) * kk_nmax *
+          sizeof(double) +
+      kk_nmax * sizeof(int);
   return bytes;
 }
 

@@ -22,6 +22,7 @@ PairStyle(mca/kk/host,PairMCAKokkos<LMPHostType>);
 #ifndef LMP_PAIR_MCA_KOKKOS_H
 #define LMP_PAIR_MCA_KOKKOS_H
 
+#include "Kokkos_ScatterView.hpp"
 #include "kokkos_base.h"
 #include "mca_kokkos_compat.h"
 #include "pair_mca.h"
@@ -29,20 +30,41 @@ PairStyle(mca/kk/host,PairMCAKokkos<LMPHostType>);
 namespace LAMMPS_NS {
 
 template <class DeviceType> struct MCAPairViews;
+struct MCALinkSums;
+
+// per-automaton sums through ScatterViews: on host threads one copy per
+// thread, added up after the kernel; on one host thread the sums themselves
+// (the order of the CPU style); on a GPU atomic additions
+template <class DeviceType> struct MCAScatter {
+  typedef typename DeviceType::memory_space memory_space;
+  static constexpr bool host =
+      Kokkos::SpaceAccessibility<Kokkos::HostSpace, memory_space>::accessible;
+  typedef Kokkos::Experimental::ScatterView<
+      double **, Kokkos::LayoutRight, DeviceType, Kokkos::Experimental::ScatterSum,
+      Kokkos::Experimental::ScatterNonDuplicated,
+      typename std::conditional<host, Kokkos::Experimental::ScatterNonAtomic,
+                                Kokkos::Experimental::ScatterAtomic>::type>
+      direct;
+  typedef typename std::conditional<
+      host,
+      Kokkos::Experimental::ScatterView<
+          double **, Kokkos::LayoutRight, DeviceType, Kokkos::Experimental::ScatterSum,
+          Kokkos::Experimental::ScatterDuplicated, Kokkos::Experimental::ScatterNonAtomic>,
+      direct>::type duplicated;
+};
 
 /* ----------------------------------------------------------------------
    pair_style mca/kk: the passes of pair_style mca as Kokkos kernels over
    the local automata, calling the same functions of mca_kernels.h.
 
-   Race-free without atomics, and deterministic (the same bits for any
-   number of threads): a link between two local automata is computed
-   once, by the lower ID, which updates its row and writes what the
-   partner needs (force, torque, traction) into the slot of that row in a
-   result buffer; a second kernel lets every automaton gather the slots of
-   its lower-ID partners, in the order of its own rows.  A link to a ghost atom is computed by its local owner.
-   Only the owner of an automaton writes its force, torque, stress and
-   energy.  The predictor and the link counts are sums over the rows of
-   each automaton (each owner reads the current copy of the row).
+   Each link is computed once, as in the CPU style: by the lower ID of two
+   local automata (whose row is current) or by the local owner of a link
+   to a ghost atom.  What it adds to the two automata (fabric and strain
+   moment in the predictor; force, torque and traction moment in the link
+   pass) goes into per-automaton sums through Kokkos ScatterViews: one
+   copy per thread on the host, added up after the kernel (so one thread
+   adds in the CPU style's order and gives its bits), atomic updates on a
+   GPU.  Only the owner of an automaton writes its force, torque, stress.
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosBase {
@@ -73,13 +95,18 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
 
   // per automaton (local + ghost): predictor values sent to the ghosts
   MCAKokkos::dual_double_1d k_pred_stiffness, k_dsmean, k_smean_pred;
-  // per local automaton
+  // per local automaton: link count, fabric tensor, and the sums of the
+  // predictor and of the link pass (with their ScatterViews) and of the
+  // per-atom energy and virial
+  typedef typename MCAScatter<DeviceType>::direct direct_type;
+  typedef typename MCAScatter<DeviceType>::duplicated dup_type;
   MCAKokkos::int_1d<DeviceType> d_link_count;
-  MCAKokkos::double_2d<DeviceType> d_fabric, d_bmat;
-  // what the lower ID of a local link leaves for its partner, by its own
-  // row: force and torque on the partner, traction, normal, energy, and
-  // the link's predictor record for the next step
-  MCAKokkos::double_2d<DeviceType> d_result;
+  MCAKokkos::double_2d<DeviceType> d_fabric, d_predictor_sums, d_link_sums, d_atom_tally;
+  // several host threads: per-thread copies of the partner contributions
+  MCAKokkos::double_3d<DeviceType> d_predictor_copies, d_link_copies;
+  dup_type dup_tally;
+  bool need_dup() const;
+  template <class Pass> void link_pass(Pass &, bool commit, bool lazy, struct MCALinkSums &);
   // the caches of the base class, in DualViews
   MCAKokkos::dual_int_2d k_partner_cache, k_row_cache;
   // materials by type
@@ -88,10 +115,7 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
   MCAKokkos::dual_double_1d k_eatom;
   MCAKokkos::dual_double_2d k_vatom;
 
-  int kk_nmax, result_rows, result_cols;
-  // the result buffer holds the predictor records of the last committed
-  // step in the current order of the atoms
-  bool slots_current;
+  int kk_nmax, tally_nmax;
 
   void grow_kk_peratom();
   void count_links_kk();

@@ -18,9 +18,9 @@ What is compared, and why these tolerances:
   the quasi-static scenes the net force on an automaton is a residual of
   1e-4 .. 1e-6 of its link forces, so scaling by the net force would
   measure the cancellation, not the agreement.
-- up to step 100: 1e-12.  The kk kernels sum the same per-link terms in
-  another order (each automaton gathers its links in row order), which
-  changes the last bits (measured <= 2e-13).
+- up to step 100: 1e-12.  On 2 threads the kk kernels sum the same
+  per-link terms in another order (two ScatterView copies, one per thread,
+  added at the end), which changes the last bits (measured <= 5e-13).
 - after 2000 steps: 1e-8, or 128 units in the last place of the
   coordinates relative to the peak displacement where that is larger.
   Once a position differs by one unit in the last place (ulp 4.4e-16 m at
@@ -29,7 +29,8 @@ What is compared, and why these tolerances:
   5e-10 of the 1.7e-6 of the wave (amplitude 1e-6 m), whose differences
   reach 1.5e-8 = 70 ulp / peak displacement.  The ulp floor is what double
   precision coordinates can resolve.
-- kk with 1 and 2 threads: identical bits (the gather is deterministic).
+- kk on 1 thread: the same bits as the CPU styles (the same order of
+  every sum) in the orthogonal scenes.
 - 2 MPI ranks vs 1: atoms are numbered by rank, so the lower ID of a link
   (which computes it) differs; same tolerances, atoms matched by position.
 """
@@ -200,17 +201,22 @@ def test_kk_matches_cpu(scene, mode, workdir):
         assert value <= tolerance, f"{name} differs by {value:.2e} after step {EARLY}"
 
 
-@pytest.mark.parametrize("scene", sorted(SCENES))
-def test_kk_threads_identical(scene, workdir):
-    """The deterministic gather gives the same bits on 1 and 2 threads."""
+@pytest.mark.parametrize("scene", ["cube_shear", "cube_tension", "wave_bar"])
+def test_kk_one_thread_is_cpu(scene, workdir):
+    """On one thread the kk styles add every term in the order of the CPU
+    styles (one ScatterView copy, filled in the CPU loop order): the same
+    bits for all 2000 steps.  Not so in the triclinic box_shear scene, where
+    the KOKKOS package's own coordinate transforms at reneighbouring
+    (x2lamda / lamda2x) round differently from the CPU ones by one unit in
+    the last place (measured: first difference 4e-16 m at step 10)."""
+    cpu = run_scene(scene, "cpu", workdir)
     one = run_scene(scene, "kk1", workdir)
-    two = run_scene(scene, "kk2", workdir)
-    assert sorted(one) == sorted(two)
-    for step in one:
-        for name in one[step]:
+    assert sorted(cpu) == sorted(one)
+    for step in cpu:
+        for name in cpu[step]:
             if name in ("timestep", "box"):
                 continue
-            assert np.array_equal(one[step][name], two[step][name]), (step, name)
+            assert np.array_equal(cpu[step][name], one[step][name]), (step, name)
 
 
 @pytest.mark.parametrize("scene", sorted(SCENES))
