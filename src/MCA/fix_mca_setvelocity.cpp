@@ -25,6 +25,8 @@
 #include "update.h"
 #include "variable.h"
 
+#include "mca_kernels.h"
+
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -143,6 +145,26 @@ void FixMCASetVelocity::post_force(int /*vflag*/)
     memory->destroy(vatom);
     memory->create(vatom, maxatom, 3, "mca/setvelocity:vatom");
   }
+  evaluate_targets();
+
+  reaction[0] = reaction[1] = reaction[2] = 0.0;
+  reaction_flag = 0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int k = 0; k < 3; k++) {
+      const double target = (style[k] == ATOM) ? vatom[i][k] : value[k];
+      reaction[k] += MCAKernels::prescribe_velocity(style[k] != NONE, target, v[i][k], f[i][k]);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the target velocities of this step: equal-style variables into value,
+   atom-style variables into vatom (allocated by the caller)
+------------------------------------------------------------------------- */
+
+void FixMCASetVelocity::evaluate_targets()
+{
   modify->clearstep_compute();
   for (int k = 0; k < 3; k++) {
     if (style[k] == EQUAL)
@@ -151,18 +173,6 @@ void FixMCASetVelocity::post_force(int /*vflag*/)
       input->variable->compute_atom(ivar[k], igroup, &vatom[0][k], 3, 0);
   }
   modify->addstep_compute(update->ntimestep + 1);
-
-  reaction[0] = reaction[1] = reaction[2] = 0.0;
-  reaction_flag = 0;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    for (int k = 0; k < 3; k++) {
-      reaction[k] += f[i][k];
-      if (style[k] == NONE) continue;
-      v[i][k] = (style[k] == ATOM) ? vatom[i][k] : value[k];
-      f[i][k] = 0.0;
-    }
-  }
 }
 
 /* ---------------------------------------------------------------------- */

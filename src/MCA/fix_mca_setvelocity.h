@@ -47,6 +47,8 @@ class FixMCASetVelocity : public Fix {
   int ilevel_respa;
   int maxatom;
   double **vatom;    // values of atom-style variables
+
+  void evaluate_targets();
 };
 
 }    // namespace LAMMPS_NS

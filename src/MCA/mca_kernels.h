@@ -141,6 +141,21 @@ namespace MCAKernels {
     rotate_quaternion(q, omega, dtv);
   }
 
+  /* a velocity component of a grip (fix mca/setvelocity): the force that
+     acted on it is the reaction (returned); a prescribed component then
+     moves at the target velocity and its force is removed, so that the
+     time integrator keeps it there                                       */
+
+  MCA_INLINE double prescribe_velocity(bool prescribed, double target, double &v, double &f)
+  {
+    const double reaction = f;
+    if (prescribed) {
+      v = target;
+      f = 0.0;
+    }
+    return reaction;
+  }
+
   /* ======================================================================
      Elastic MCA interaction of a linked pair
      ======================================================================

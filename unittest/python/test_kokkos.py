@@ -217,6 +217,13 @@ def test_kk_one_thread_is_cpu(scene, workdir):
             if name in ("timestep", "box"):
                 continue
             assert np.array_equal(cpu[step][name], one[step][name]), (step, name)
+    # the scene's own output: for the cubes the reaction force of fix
+    # mca/setvelocity (mca/setvelocity/kk here) and the strains
+    if scene.startswith("cube"):
+        name = "cube.{grips}.{load}.dat".format(**SCENES[scene][2])
+        text = {mode: (pathlib.Path(workdir) / scene / mode / name).read_text()
+                for mode in ("cpu", "kk1")}
+        assert text["cpu"] == text["kk1"]
 
 
 @pytest.mark.parametrize("scene", sorted(SCENES))
