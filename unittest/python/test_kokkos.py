@@ -248,13 +248,15 @@ def test_kk_links_migrate_between_ranks(tmp_path):
     """The flight of test_pair_mca.test_links_migrate_between_ranks (a
     vibrating cluster crossing ranks and the periodic boundary at 100 m/s,
     reneighbouring every step or two) with the kk styles on 2 ranks x 1
-    thread and on 1 rank x 2 threads, against the CPU styles on 1 rank, with
+    thread, 1 rank x 2 threads and 2 ranks x 2 threads (MPI and threads
+    together), against the CPU styles on 1 rank, with
     the tolerances of that test (round-off of the periodic images)."""
     from test_pair_mca import MIGRATE, assert_same_flight, migrate_final
 
     build = kokkos_build()
     _, cpu = migrate_final(build, tmp_path / "cpu", MIGRATE, 1)
-    for name, nprocs, threads in (("mpi2", 2, "1"), ("threads2", 1, "2")):
+    modes = (("mpi2", 2, "1"), ("threads2", 1, "2"), ("mpi2_threads2", 2, "2"))
+    for name, nprocs, threads in modes:
         directory = tmp_path / name
         build.run(MIGRATE, directory, nprocs=nprocs,
                   extra_args=("-k", "on", "t", threads, "-sf", "kk"))
