@@ -35,8 +35,8 @@
 using namespace LAMMPS_NS;
 using namespace MCAKernels;
 
-// per-automaton sums of the two link passes, accumulated in ScatterViews
-// (columns): the predictor's fabric tensor F and strain moment M, and the
+// per-automaton sums of the two link passes (columns): the predictor's
+// fabric tensor F and strain moment M, and the
 // link pass's force, torque and traction moment B (see PairMCA)
 enum PredictorSum { PS_FABRIC = 0, PS_STRAIN = 6, PS_SIZE = 12 };
 enum LinkSum { LS_FORCE = 0, LS_TORQUE = 3, LS_BMAT = 6, LS_SIZE = 15 };
@@ -241,17 +241,13 @@ template <class DeviceType, class Sums> struct MCAPredictorLinks {
       const double *h = &d.history(i, m * H_SIZE);
       if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
       const double del[3] = {d.x(j, 0) - d.x(i, 0), d.x(j, 1) - d.x(i, 1), d.x(j, 2) - d.x(i, 2)};
-      double nn[6], rec[P_SIZE];
-      predictor_record(h, rec);
-      const double dr = link_direction(del, nn) - rec[P_RPREV];
-      const double h_i = d.pred_stiffness(i), h_j = d.pred_stiffness(j);
-      const double de_i = link_half_strain(rec, ilo, h_i, h_j, dr);
+      double nn[6], de_i, de_j;
+      link_prediction(h, del, ilo, d.pred_stiffness(i), d.pred_stiffness(j), nn, de_i, de_j);
       for (int k = 0; k < 6; k++) {
         sums.own(add, i, PS_FABRIC + k, nn[k]);
         sums.own(add, i, PS_STRAIN + k, de_i * nn[k]);
       }
       if (jlocal) {
-        const double de_j = link_half_strain(rec, !ilo, h_j, h_i, dr);
         for (int k = 0; k < 6; k++) {
           sums.partner(add, j, PS_FABRIC + k, nn[k]);
           sums.partner(add, j, PS_STRAIN + k, de_j * nn[k]);
@@ -539,15 +535,6 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::init_style()
   Kokkos::deep_copy(d_coupling, h_coupling);
 }
 
-/* ----------------------------------------------------------------------
-   links are made on the host from an occasional neighbor list
-------------------------------------------------------------------------- */
-
-template <class DeviceType> void PairMCAKokkos<DeviceType>::setup()
-{
-  PairMCA::setup();
-}
-
 /* ---------------------------------------------------------------------- */
 
 template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
@@ -788,6 +775,9 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   atomKK->sync(execution_space, datamask_read);
   atomKK->modified(execution_space, datamask_modify);
   grow_kk_peratom();
+  // the table may have changed on the host (exchange, restart, setup); the
+  // partner cache below only reads the host copy, which stays current
+  linksKK->to_device();
 
   // the partner cache is made on the host when LAMMPS reneighbors (the
   // atom map and the closest images live there)
@@ -797,15 +787,12 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     atomKK->sync(Host, X_MASK | TAG_MASK);
     links->to_host();
     build_partner_cache();
-    grow_kk_peratom();
     k_partner_cache.modify_host();
     k_row_cache.modify_host();
     k_partner_cache.template sync<DeviceType>();
     k_row_cache.template sync<DeviceType>();
-    linksKK->to_device();
     count_links_kk();
   }
-  linksKK->to_device();
 
   const bool commit = (update->setupflag == 0);
   const bool lazy = links->lazy_rows && links->row_sync == this;

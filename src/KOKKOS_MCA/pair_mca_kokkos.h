@@ -32,9 +32,9 @@ namespace LAMMPS_NS {
 template <class DeviceType> struct MCAPairViews;
 struct MCALinkSums;
 
-// per-automaton sums through ScatterViews: on host threads one copy per
-// thread, added up after the kernel; on one host thread the sums themselves
-// (the order of the CPU style); on a GPU atomic additions
+// ScatterViews of the per-automaton sums: direct (one host thread: plain
+// additions in the loop order; GPU: atomic additions) and duplicated per
+// host thread (used for the per-atom energy and virial)
 template <class DeviceType> struct MCAScatter {
   typedef typename DeviceType::memory_space memory_space;
   static constexpr bool host =
@@ -61,10 +61,11 @@ template <class DeviceType> struct MCAScatter {
    local automata (whose row is current) or by the local owner of a link
    to a ghost atom.  What it adds to the two automata (fabric and strain
    moment in the predictor; force, torque and traction moment in the link
-   pass) goes into per-automaton sums through Kokkos ScatterViews: one
-   copy per thread on the host, added up after the kernel (so one thread
-   adds in the CPU style's order and gives its bits), atomic updates on a
-   GPU.  Only the owner of an automaton writes its force, torque, stress.
+   pass) goes into per-automaton sums: on one host thread directly, in the
+   CPU style's order (which gives its bits); on several host threads the
+   own part in registers and the partner part in per-thread copies, added
+   by the kernel that reads the sums; on a GPU by atomic additions.  Only
+   the owner of an automaton writes its force, torque and stress.
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosBase {
@@ -74,7 +75,6 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
 
   void compute(int, int) override;
   void init_style() override;
-  void setup() override;
   void predict_mean_stress() override;
   void sync_link_rows() override;
 
@@ -96,8 +96,7 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
   // per automaton (local + ghost): predictor values sent to the ghosts
   MCAKokkos::dual_double_1d k_pred_stiffness, k_dsmean, k_smean_pred;
   // per local automaton: link count, fabric tensor, and the sums of the
-  // predictor and of the link pass (with their ScatterViews) and of the
-  // per-atom energy and virial
+  // predictor, of the link pass and of the per-atom energy and virial
   typedef typename MCAScatter<DeviceType>::direct direct_type;
   typedef typename MCAScatter<DeviceType>::duplicated dup_type;
   MCAKokkos::int_1d<DeviceType> d_link_count;

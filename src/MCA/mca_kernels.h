@@ -370,31 +370,28 @@ namespace MCAKernels {
     return r;
   }
 
-  // what the predictor reads of a link's history: state, length and normal
-  // tractions at the last step, reference half lengths
-  enum PredictorRecord { P_STATE = 0, P_RPREV, P_Q0LO, P_Q0HI, P_SIGLO, P_SIGHI, P_SIZE };
-
-  MCA_INLINE void predictor_record(const double *hist, double *rec)
-  {
-    rec[P_STATE] = hist[H_STATE];
-    rec[P_RPREV] = hist[H_RPREV];
-    rec[P_Q0LO] = hist[H_Q0LO];
-    rec[P_Q0HI] = hist[H_Q0HI];
-    rec[P_SIGLO] = hist[H_LO + HALF_SIG];
-    rec[P_SIGHI] = hist[H_HI + HALF_SIG];
-  }
-
   // predicted strain increment of the half of automaton i (the lower ID
-  // if i_is_lo) of a link (its predictor record) whose length changed by
-  // dr since the last step; h_i, h_j: predictor stiffnesses of the two
-  MCA_INLINE double link_half_strain(const double *rec, bool i_is_lo, double h_i, double h_j,
+  // if i_is_lo) of a link whose length changed by dr since the last step;
+  // h_i, h_j: predictor stiffnesses of the two automata
+  MCA_INLINE double link_half_strain(const double *hist, bool i_is_lo, double h_i, double h_j,
                                      double dr)
   {
-    const double sig_i = rec[i_is_lo ? P_SIGLO : P_SIGHI];
-    const double sig_j = rec[i_is_lo ? P_SIGHI : P_SIGLO];
-    const double q0_i = rec[i_is_lo ? P_Q0LO : P_Q0HI];
-    const double q0_j = rec[i_is_lo ? P_Q0HI : P_Q0LO];
+    const double sig_i = hist[(i_is_lo ? H_LO : H_HI) + HALF_SIG];
+    const double sig_j = hist[(i_is_lo ? H_HI : H_LO) + HALF_SIG];
+    const double q0_i = hist[i_is_lo ? H_Q0LO : H_Q0HI];
+    const double q0_j = hist[i_is_lo ? H_Q0HI : H_Q0LO];
     return predicted_strain(sig_i, sig_j, h_i, h_j, q0_i, q0_j, dr);
+  }
+
+  // the predictor's view of one link between automata i and j (del =
+  // x_j - x_i): the dyad n n^T and the predicted strain increments of the
+  // half of i and of the half of j
+  MCA_INLINE void link_prediction(const double *hist, const double *del, bool i_is_lo, double h_i,
+                                  double h_j, double *nn, double &de_i, double &de_j)
+  {
+    const double dr = link_direction(del, nn) - hist[H_RPREV];
+    de_i = link_half_strain(hist, i_is_lo, h_i, h_j, dr);
+    de_j = link_half_strain(hist, !i_is_lo, h_j, h_i, dr);
   }
 
   // F += n n^T, M += de n n^T

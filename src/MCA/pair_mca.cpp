@@ -582,15 +582,11 @@ void PairMCA::predict_mean_stress()
       const double *h = &links->history[i][m * H_SIZE];
       if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
       const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      double nn[6], rec[P_SIZE];
-      predictor_record(h, rec);
-      const double dr = link_direction(del, nn) - rec[P_RPREV];
-      const bool ilo = tag[i] < tag[j];
-      const double h_i = pred_stiffness[i], h_j = pred_stiffness[j];
-      predictor_add(fabric_atom[i], pred_strain[i], nn, link_half_strain(rec, ilo, h_i, h_j, dr));
-      if (jlocal)
-        predictor_add(fabric_atom[j], pred_strain[j], nn,
-                      link_half_strain(rec, !ilo, h_j, h_i, dr));
+      double nn[6], de_i, de_j;
+      link_prediction(h, del, tag[i] < tag[j], pred_stiffness[i], pred_stiffness[j], nn, de_i,
+                      de_j);
+      predictor_add(fabric_atom[i], pred_strain[i], nn, de_i);
+      if (jlocal) predictor_add(fabric_atom[j], pred_strain[j], nn, de_j);
     }
   }
 

@@ -486,8 +486,8 @@ def test_links_migrate_between_ranks(build, tmp_path):
     assert np.max(np.abs(finals[1]["c_s[7]"])) > 1.0e4
 
 
-def migrate_final(build, directory, script, nprocs):
-    build.run(script, directory, nprocs=nprocs)
+def migrate_final(build, directory, script, nprocs, extra_args=()):
+    build.run(script, directory, nprocs=nprocs, extra_args=extra_args)
     first, last = read_dump(directory / "states.dump")[:2]
     order = np.lexsort(np.round([first["z"], first["y"], first["x"]], 6))
     return last["timestep"], {name: last[name][order] for name in last
