@@ -46,7 +46,8 @@ static constexpr int MCA_NGROW = 20;
 AtomVecMCAKokkos::AtomVecMCAKokkos(LAMMPS *lmp) : AtomVecMCAStyle<AtomVecKokkos>(lmp)
 {
   MCAKokkos::require_kokkos(lmp, "Atom style mca/kk");
-  owns_arrays = 0;    // the DualViews below own the MCA fields
+  commKK = (CommKokkos *) comm;    // AtomVecKokkos leaves it to the styles
+  owns_arrays = 0;                 // the DualViews below own the MCA fields
   no_comm_vel_flag = 0;
   no_border_vel_flag = 1;
 #ifdef MCA_HAVE_ATOM_QUAT

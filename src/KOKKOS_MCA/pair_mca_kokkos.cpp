@@ -476,8 +476,11 @@ PairMCAKokkos<DeviceType>::PairMCAKokkos(LAMMPS *lmp) :
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
   execution_space = MCAKokkos::space_of<DeviceType>();
+  // the state fields are read too: the kernels write only some of them
+  // (stress, mean stress, equivalent values), and marking the others
+  // modified on the device without a sync would lose host changes
   datamask_read = X_MASK | F_MASK | TORQUE_MASK | OMEGA_MASK | TYPE_MASK | TAG_MASK |
-      MCA_GEOMETRY_MASK | ENERGY_MASK | VIRIAL_MASK;
+      MCA_GEOMETRY_MASK | MCA_STATE_MASK | ENERGY_MASK | VIRIAL_MASK;
   datamask_modify = F_MASK | TORQUE_MASK | MCA_STATE_MASK | ENERGY_MASK | VIRIAL_MASK;
 }
 

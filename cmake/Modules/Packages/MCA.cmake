@@ -76,6 +76,14 @@ if(PKG_KOKKOS)
     target_include_directories(lammps PRIVATE ${KOKKOS_MCA_SOURCES_DIR})
     list(LENGTH _kokkos_mca_sources _n)
     message(STATUS "KOKKOS_MCA: ${_n} Kokkos style source files")
+    # nvcc contracts a*b + c into fused multiply-adds by default, which
+    # rounds once where the CPU rounds twice; off: the GPU kernels do the
+    # CPU styles' arithmetic (to compare them with the CPU to round-off)
+    option(MCA_KOKKOS_FMAD "Let nvcc fuse multiply-adds in the KOKKOS_MCA kernels" ON)
+    mark_as_advanced(MCA_KOKKOS_FMAD)
+    if(NOT MCA_KOKKOS_FMAD AND Kokkos_ENABLE_CUDA)
+      set_property(SOURCE ${_kokkos_mca_sources} APPEND PROPERTY COMPILE_OPTIONS "--fmad=false")
+    endif()
   endif()
 endif()
 
