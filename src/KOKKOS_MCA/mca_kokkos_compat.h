@@ -38,6 +38,9 @@
 #include "kokkos_type.h"
 #include "lammps.h"
 #include "mca_config.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "pair.h"
 
 #include <type_traits>
 #include <utility>
@@ -74,6 +77,27 @@ namespace MCAKokkos {
                       "'-k on' (a restart file written by a run with -sf kk names the /kk "
                       "styles: read it with -k on -sf kk)",
                       what);
+  }
+
+  // a perpetual full neighbour list built on the device.  pair mca/kk does
+  // not read it (the links carry their partners), but without any device
+  // request the KOKKOS neighbour class checks the displacements for
+  // reneighbouring on the host, copying the positions there every step
+  // (half the time of a GPU step, measured on an H100)
+  inline void request_device_list(Neighbor *neighbor, Pair *pair, int instance)
+  {
+#ifdef MCA_HAVE_ADD_REQUEST
+    (void) instance;
+    auto request = neighbor->add_request(pair, NeighConst::REQ_FULL);
+    request->set_kokkos_device(1);
+    request->set_kokkos_host(0);
+#else
+    const int irequest = neighbor->request(pair, instance);
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->kokkos_device = 1;
+    neighbor->requests[irequest]->kokkos_host = 0;
+#endif
   }
 
   // execution space tag of LAMMPS for a device type

@@ -516,6 +516,9 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::init_style()
                "without the Kokkos suffix; use the same variant throughout a simulation or "
                "go through a restart file");
 
+  // on a GPU, keep the reneighbouring check on the device (see the function)
+  if (!MCAScatter<DeviceType>::host) MCAKokkos::request_device_list(neighbor, this, instance_me);
+
   if (comm->me == 0)
     utils::logmesg(lmp, "pair mca/kk: link passes as Kokkos kernels in the {} execution space\n",
                    execution_space == Device ? "device" : "host");
