@@ -6,6 +6,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from dispersion_model import p_wave_speed_ratio  # noqa: E402
 
 A, E, RHO = 0.7184, 70.0e9, 2700.0
 MS = (4, 6, 10, 20, 40)
@@ -28,9 +29,11 @@ def speed_error(label, m):
 
 errors = {label: np.array([speed_error(label, m) for m in MS]) for label in ("p", "s", "p0")}
 with open("dispersion.txt", "w") as f:
-    f.write("# automata_per_wavelength  cP/c_p-1(nu=0.3)  cS/c_s-1(nu=0.3)  cP/c_p-1(nu=0)\n")
+    f.write("# automata_per_wavelength  cP/c_p-1(nu=0.3)  cS/c_s-1(nu=0.3)  cP/c_p-1(nu=0)"
+            "  cP/c_p-1(nu=0.3, MCA dispersion relation)\n")
     for i, m in enumerate(MS):
-        f.write(f"{m:4d} {errors['p'][i]:+.5e} {errors['s'][i]:+.5e} {errors['p0'][i]:+.5e}\n")
+        f.write(f"{m:4d} {errors['p'][i]:+.5e} {errors['s'][i]:+.5e} {errors['p0'][i]:+.5e}"
+                f" {p_wave_speed_ratio(m, 0.3) - 1:+.5e}\n")
 print(open("dispersion.txt").read(), end="")
 
 fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -41,6 +44,8 @@ ax.loglog(ms, np.abs(errors["p0"]), "^-", label=r"P wave, $\nu = 0$")
 mm = np.linspace(4, 40, 100)
 x = np.pi / mm
 ax.loglog(mm, 1 - np.sin(x) / x, "k:", lw=1, label=r"chain of planes $1 - \sin(x)/x$, $x = \pi/m$")
+ax.loglog(mm, [1 - p_wave_speed_ratio(m, 0.3) for m in mm], "k--", lw=1,
+          label=r"MCA dispersion relation, P, $\nu = 0.3$")
 ax.axhline(0.01, color="grey", lw=0.8, ls="--", label="1 %")
 ax.set_xlabel("automata (planes) per wavelength m")
 ax.set_ylabel(r"$|c/c_0 - 1|$ (all slower than $c_0$)")

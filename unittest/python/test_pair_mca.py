@@ -5,11 +5,15 @@ tolerance.  Material: aluminium of the thesis, E = 70 GPa, rho = 2700 kg/m^3.
 """
 
 import math
+import sys
 
 import numpy as np
 import pytest
 
 from mcatest import ROOT, read_dump, read_thermo, relative_difference
+
+sys.path.insert(0, str(ROOT / "examples" / "waves"))
+from dispersion_model import p_wave_speed_ratio  # noqa: E402
 
 E = 70.0e9
 RHO = 2700.0
@@ -188,11 +192,14 @@ def test_wave_speeds_converge_to_the_continuum(build, tmp_path):
     The dispersion error is printed for 4, 6, 10, 20 and 40 (200) planes of
     automata per wavelength, and must fall at least 3x per doubling (the
     lattice is second-order accurate).  The S wave is within 1 % at 10
-    automata per wavelength (measured -0.86 %).  The P wave is not: its
-    mean-stress term averages the volumetric strain over the neighbour shell
-    of each automaton, which softens short waves (-6.1 % at 10, -1.7 % at
-    20, -0.43 % at 40 for nu = 0.3; see pair_mca.rst); it is held to 2 % at
-    20 and 0.5 % at 40.
+    automata per wavelength (measured -0.86 %).  The P wave follows the
+    dispersion relation of the linearised MCA law (examples/waves/
+    dispersion_model.py, derived in pair_mca.rst): measured minus predicted
+    c/c_p within 1e-4 at every m, the time-step error of 400 steps per
+    period (measured up to 4.4e-5; it falls 16x for 4x smaller steps).
+    That relation is 1 % slow only from 26.1 planes (18.4 automaton
+    diameters) per wavelength for nu = 0.3: the issue's 1 % at 10 cannot be
+    met by this law (see the note in pair_mca.rst), so it is not asserted.
     """
     errors = {}
     for pol in ("p", "s"):
@@ -204,7 +211,11 @@ def test_wave_speeds_converge_to_the_continuum(build, tmp_path):
         for m in (10, 20):
             assert errors[pol, m] / errors[pol, 2 * m] > 3.0
     assert abs(errors["s", 10]) < 0.01 and abs(errors["s", 40]) < 0.001
-    assert abs(errors["p", 20]) < 0.02 and abs(errors["p", 40]) < 0.005
+    for m in (4, 6, 10, 20, 40):
+        predicted = p_wave_speed_ratio(m, 0.3) - 1.0
+        print(f"P wave, m = {m}: measured {errors['p', m]:+.5e}, MCA dispersion relation "
+              f"{predicted:+.5e}, difference {errors['p', m] - predicted:+.1e}")
+        assert abs(errors["p", m] - predicted) < 1.0e-4
 
 
 def test_p_wave_without_mean_stress_coupling_is_a_spring_chain(build, tmp_path):
