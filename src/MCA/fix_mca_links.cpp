@@ -253,8 +253,15 @@ int FixMCALinks::unpack_exchange(int nlocal, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   global restart data: capacity and whether the links exist
+   global restart data: capacity, whether the links exist, and the layout
+   of the history rows (files written before layouts were numbered hold
+   H_SIZE, i.e. layout 0)
 ------------------------------------------------------------------------- */
+
+static int history_format()
+{
+  return 1000 * H_LAYOUT + H_SIZE;
+}
 
 void FixMCALinks::write_restart(FILE *fp)
 {
@@ -262,7 +269,7 @@ void FixMCALinks::write_restart(FILE *fp)
   sync_rows();
   to_host();
   if (comm->me == 0) {
-    double list[3] = {(double) maxlinks, (double) created, (double) H_SIZE};
+    double list[3] = {(double) maxlinks, (double) created, (double) history_format()};
     int size = 3 * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
     fwrite(list, sizeof(double), 3, fp);
@@ -274,9 +281,12 @@ void FixMCALinks::write_restart(FILE *fp)
 void FixMCALinks::restart(char *buf)
 {
   auto list = (double *) buf;
-  if (static_cast<int>(list[2]) != H_SIZE)
-    error->all(FLERR, "Restart file holds MCA links with {} values each, this version uses {}",
-               static_cast<int>(list[2]), static_cast<int>(H_SIZE));
+  const int format = static_cast<int>(list[2]);
+  if (format != history_format())
+    error->all(FLERR,
+               "Restart file holds MCA links in history layout {} with {} values each; this "
+               "version reads layout {} with {}",
+               format / 1000, format % 1000, static_cast<int>(H_LAYOUT), static_cast<int>(H_SIZE));
   set_capacity(static_cast<int>(list[0]));
   created = static_cast<int>(list[1]);
 }

@@ -171,20 +171,24 @@ namespace MCAKernels {
      - q0 = reference distance from an automaton's centre to the contact
        plane (q0_lo + q0_hi = reference length r0), q = q0 (1 + eps)        */
 
-  // layout of the per-link history (doubles); both owners store all of it
+  // layout of the per-link history (doubles); both owners store all of it.
+  // What the mean-stress predictor reads comes first (up to the normal
+  // tractions of both halves), so that its pass touches few cache lines.
+  // H_LAYOUT numbers the layout in restart files: change it with the order
+  enum { H_LAYOUT = 1 };
   enum LinkHistory {
     H_STATE = 0,    // link state (LINKED)
-    H_R0,           // reference length r0
+    H_RPREV,        // length at the last step
     H_Q0LO,         // reference half lengths
     H_Q0HI,
+    H_LO,                     // half of lo: sigma, eps, t(3), couple(3)
+    H_HI = H_LO + 8,          // half of hi
+    H_R0 = H_HI + 8,          // reference length r0
     H_A0,                     // reference contact area
-    H_RPREV,                  // length at the last step
     H_NPREV,                  // unit normal lo -> hi at the last step (3)
     H_APREV = H_NPREV + 3,    // contact area at the last step
     H_WORK,                   // elastic energy of the link
-    H_LO,                     // half of lo: sigma, eps, t(3), couple(3)
-    H_HI = H_LO + 8,          // half of hi
-    H_SIZE = H_HI + 8
+    H_SIZE
   };
   // offsets inside a half
   enum LinkHalf { HALF_SIG = 0, HALF_EPS, HALF_T, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8 };

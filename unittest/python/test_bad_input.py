@@ -5,6 +5,7 @@ Each case is a small input that must stop with exit status 1, print
 """
 
 import re
+import struct
 
 import pytest
 
@@ -237,3 +238,23 @@ def test_lost_link_stops_the_run(build, tmp_path):
     assert re.search(r"ERROR on proc \d: Pair mca: the link of automaton \d to automaton \d is "
                      r"lost: the partner is farther than the communication cutoff",
                      result.stdout + result.stderr)
+
+
+def test_restart_with_another_history_layout_is_refused(build, tmp_path):
+    """A restart file whose link rows are laid out differently (here: the
+    unnumbered layout 0 of files written before the layout was recorded) is
+    refused with a clear error instead of being read field by field into the
+    wrong places."""
+    build.run(TWO + "write_restart two.restart\n", tmp_path)
+    restart = tmp_path / "two.restart"
+    data = restart.read_bytes()
+    # the links fix records (capacity, created, 1000 x layout + values per link)
+    current = struct.pack("<d", 1027.0)
+    assert data.count(current) == 1, "the layout record of the links fix was not found once"
+    restart.write_bytes(data.replace(current, struct.pack("<d", 27.0)))
+    result = build.run("read_restart two.restart\n" + PAIR.split("\n", 1)[1] + "run 0\n",
+                       tmp_path, check=False, timeout=120)
+    output = result.stdout + result.stderr
+    assert 0 < result.returncode < 128, output[-2000:]
+    assert re.search(r"ERROR: Restart file holds MCA links in history layout 0 with 27 values "
+                     r"each; this version reads layout 1 with 27", output), output[-2000:]
