@@ -62,10 +62,12 @@ template <class DeviceType> struct MCAScatter {
    to a ghost atom.  What it adds to the two automata (fabric and strain
    moment in the predictor; force, torque and traction moment in the link
    pass) goes into per-automaton sums: on one host thread directly, in the
-   CPU style's order (which gives its bits); on several host threads the
-   own part in registers and the partner part in per-thread copies, added
-   by the kernel that reads the sums; on a GPU by atomic additions.  Only
-   the owner of an automaton writes its force, torque and stress.
+   CPU style's order (which gives its bits); on several host threads each
+   thread runs one contiguous chunk of the automata, adding directly to
+   the automata of its chunk and into a per-chunk copy for the others
+   (added by the kernel that reads the sums); on a GPU by atomic
+   additions.  Only the owner of an automaton writes its force, torque
+   and stress.
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosBase {
@@ -99,12 +101,15 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
   // predictor, of the link pass and of the per-atom energy and virial
   typedef typename MCAScatter<DeviceType>::direct direct_type;
   typedef typename MCAScatter<DeviceType>::duplicated dup_type;
-  MCAKokkos::int_1d<DeviceType> d_link_count;
+  // d_foreign: 1 where a partner in another chunk adds to the automaton
+  MCAKokkos::int_1d<DeviceType> d_link_count, d_foreign;
   MCAKokkos::double_2d<DeviceType> d_fabric, d_predictor_sums, d_link_sums, d_atom_tally;
-  // several host threads: per-thread copies of the partner contributions
+  // several host threads: per-chunk copies of the contributions to
+  // automata of other chunks (chunk_size automata per chunk)
   MCAKokkos::double_3d<DeviceType> d_predictor_copies, d_link_copies;
   dup_type dup_tally;
   bool need_dup() const;
+  int chunks() const;
   template <class Pass> void link_pass(Pass &, bool commit, bool lazy, struct MCALinkSums &);
   // the caches of the base class, in DualViews
   MCAKokkos::dual_int_2d k_partner_cache, k_row_cache;
@@ -114,7 +119,7 @@ template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosB
   MCAKokkos::dual_double_1d k_eatom;
   MCAKokkos::dual_double_2d k_vatom;
 
-  int kk_nmax, tally_nmax;
+  int kk_nmax, tally_nmax, chunk_size;
 
   void grow_kk_peratom();
   void count_links_kk();
