@@ -114,11 +114,13 @@ namespace MCAKokkos {
 #define MCA_KK_COMM_BUFFER DAT::tdual_double_1d
 #define MCA_KK_PACK_FORWARD_ARGS \
   int n, DAT::tdual_int_1d k_sendlist, MCA_KK_COMM_BUFFER &k_buf, int pbc_flag, int *pbc
+#define MCA_KK_SENDLIST_VIEW DAT::tdual_int_1d
 #define MCA_KK_SENDLIST(list, iswap, i) list(i)
 #else
 #define MCA_KK_COMM_BUFFER DAT::tdual_xfloat_1d
 #define MCA_KK_PACK_FORWARD_ARGS \
   int n, DAT::tdual_int_2d k_sendlist, int iswap, MCA_KK_COMM_BUFFER &k_buf, int pbc_flag, int *pbc
+#define MCA_KK_SENDLIST_VIEW DAT::tdual_int_2d
 #define MCA_KK_SENDLIST(list, iswap, i) list(iswap, i)
 #endif
 

@@ -492,7 +492,7 @@ template <class DeviceType> struct MCASyncRows {
 template <class DeviceType> struct MCAPackForward {
   typedef DeviceType device_type;
   MCAKokkos::double_1d<DeviceType> a, b;    // b unused when stride is 1
-  MCAKokkos::view_of<DAT::tdual_int_2d, DeviceType> list;
+  MCAKokkos::view_of<MCA_KK_SENDLIST_VIEW, DeviceType> list;
   MCAKokkos::view_of<MCA_KK_COMM_BUFFER, DeviceType> buf;
   int iswap, stride;
 
