@@ -80,12 +80,18 @@ template <class DeviceType> struct MCAPairViews {
 
   int nlocal;
 
-  // the history row of link m of automaton i that is current: a link
-  // between local automata advances in the row of the lower ID
+  // a link between local automata is evaluated by, and advances in the
+  // row of, the lower ID: is that the partner j of i?
+  KOKKOS_INLINE_FUNCTION bool partner_evaluates(int i, int j) const
+  {
+    return j < nlocal && tag(j) < tag(i);
+  }
+
+  // the history row of link m of automaton i that is current
   KOKKOS_INLINE_FUNCTION const double *current_row(int i, int m) const
   {
     const int j = partner(i, m);
-    if (j < nlocal && tag(j) < tag(i)) return &history(j, row(i, m) * H_SIZE);
+    if (partner_evaluates(i, j)) return &history(j, row(i, m) * H_SIZE);
     return &history(i, m * H_SIZE);
   }
 };
@@ -142,10 +148,10 @@ template <class DeviceType> struct MCACountLinks {
     int foreign = 0;
     for (int m = 0; m < d.nlinks(i); m++) {
       if (static_cast<int>(d.current_row(i, m)[H_STATE]) == LINK_LINKED) n++;
-      // a local partner with the lower ID computes the link; from another
-      // chunk it adds its contribution to i in its chunk's copy
+      // a partner that evaluates the link from another chunk adds its
+      // contribution to i in its chunk's copy
       const int j = d.partner(i, m);
-      if (chunk_size > 0 && j < d.nlocal && d.tag(j) < d.tag(i) && j / chunk_size != i / chunk_size)
+      if (chunk_size > 0 && d.partner_evaluates(i, j) && j / chunk_size != i / chunk_size)
         foreign = 1;
     }
     d.link_count(i) = n;
@@ -186,10 +192,9 @@ template <class DeviceType> struct MCADirectSums {
   {
     add(j, k) += value;
   }
-  KOKKOS_INLINE_FUNCTION void end(Thread &, int) const {}
 };
 
-template <class DeviceType, int N> struct MCAChunkSums {
+template <class DeviceType> struct MCAChunkSums {
   MCAKokkos::double_2d<DeviceType> sums;
   MCAKokkos::double_3d<DeviceType> copies;
   int chunk_size;
@@ -220,8 +225,13 @@ template <class DeviceType, int N> struct MCAChunkSums {
   {
     row[k] += value;
   }
-  KOKKOS_INLINE_FUNCTION void end(Thread &, int) const {}
 };
+
+// one past the last automaton of chunk c
+KOKKOS_INLINE_FUNCTION int chunk_end(int c, int chunk_size, int nlocal)
+{
+  return (c + 1) * chunk_size < nlocal ? (c + 1) * chunk_size : nlocal;
+}
 
 // a kernel over the automata of one chunk per call, in order
 template <class Pass> struct MCAChunkedFor {
@@ -231,7 +241,7 @@ template <class Pass> struct MCAChunkedFor {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int c) const
   {
-    const int last = (c + 1) * chunk_size < nlocal ? (c + 1) * chunk_size : nlocal;
+    const int last = chunk_end(c, chunk_size, nlocal);
     for (int i = c * chunk_size; i < last; i++) pass(i);
   }
 };
@@ -244,7 +254,7 @@ template <class Pass> struct MCAChunkedReduce {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int c, value_type &sum) const
   {
-    const int last = (c + 1) * chunk_size < nlocal ? (c + 1) * chunk_size : nlocal;
+    const int last = chunk_end(c, chunk_size, nlocal);
     for (int i = c * chunk_size; i < last; i++) pass(i, sum);
   }
 };
@@ -306,7 +316,6 @@ template <class DeviceType, class Sums> struct MCAPredictorLinks {
         }
       }
     }
-    sums.end(add, i);
   }
 };
 
@@ -425,7 +434,6 @@ template <class DeviceType, class Sums, class TallyScatter> struct MCALinkPass {
         }
       }
     }
-    sums.end(add, i);
   }
 };
 
@@ -477,7 +485,7 @@ template <class DeviceType> struct MCASyncRows {
   {
     for (int m = 0; m < d.nlinks(i); m++) {
       const int j = d.partner(i, m);
-      if (!(j < d.nlocal && d.tag(j) < d.tag(i))) continue;
+      if (!d.partner_evaluates(i, j)) continue;
       const double *from = &d.history(j, d.row(i, m) * H_SIZE);
       double *to = &d.history(i, m * H_SIZE);
       for (int k = 0; k < H_SIZE; k++) to[k] = from[k];
@@ -780,7 +788,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::predict_mean_stress(
   const MCAPairViews<DeviceType> d = views();
   // the sums start at zero: the kernels that read them leave them so
   if (need_dup()) {
-    MCAChunkedFor<MCAPredictorLinks<DeviceType, MCAChunkSums<DeviceType, PS_SIZE>>> chunked;
+    MCAChunkedFor<MCAPredictorLinks<DeviceType, MCAChunkSums<DeviceType>>> chunked;
     chunked.pass.d = d;
     chunked.pass.sums.sums = d_predictor_sums;
     chunked.pass.sums.copies = d_predictor_copies;
@@ -892,7 +900,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   MCALinkSums sums;
   if (need_dup()) {
     if (atom_tally) dup_tally.reset();
-    MCALinkPass<DeviceType, MCAChunkSums<DeviceType, LS_SIZE>, dup_type> pass;
+    MCALinkPass<DeviceType, MCAChunkSums<DeviceType>, dup_type> pass;
     pass.d = d;
     pass.sums.sums = d_link_sums;
     pass.sums.copies = d_link_copies;
