@@ -15,8 +15,9 @@ in core-microseconds (us_wall x cores), the kk/CPU cost on one core
 
 Usage (the kokkos build's lmp and mpirun on the PATH, e.g.
 eval "$(tools/mca env kokkos)"; export PATH=$MCA_BUILD_KOKKOS:$PATH):
-    /usr/bin/python3 kokkos.py [--sizes 20 40] [--repeat 3] [--out results]
-Writes results/kokkos.csv and results/kokkos.png.
+    /usr/bin/python3 kokkos.py [--sizes 20 40] [--repeat 3] [--out results] [--name kokkos]
+Writes results/NAME.csv and results/NAME.png (NAME: kokkos, or kokkos5 for the
+LAMMPS 4 Jul 2026 + Kokkos 5 build of 'tools/mca build kokkos5').
 """
 
 import argparse
@@ -40,15 +41,15 @@ MODES = {  # name: (ranks, threads, kokkos)
 STEPS = {10: 1000, 20: 200, 40: 40}
 
 
-def run_mode(mode, n, steps, outdir, repeat=1):
+def run_mode(mode, n, steps, outdir, repeat=1, name="kokkos"):
     """Best of `repeat` runs (the noise of a shared machine only adds time)."""
-    results = [run_once(mode, n, steps, outdir) for _ in range(repeat)]
+    results = [run_once(mode, n, steps, outdir, name) for _ in range(repeat)]
     return min(results, key=lambda r: r["us_wall"])
 
 
-def run_once(mode, n, steps, outdir):
+def run_once(mode, n, steps, outdir, name="kokkos"):
     ranks, threads, kokkos = MODES[mode]
-    log = os.path.join(outdir, f"log.kokkos.{mode}.n{n}")
+    log = os.path.join(outdir, f"log.{name}.{mode}.n{n}")
     cmd = ["lmp", "-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
            "-var", "n", str(n), "-var", "nsteps", str(steps), "-log", log, "-screen", "none"]
     if kokkos:
@@ -72,6 +73,7 @@ def main():
     ap.add_argument("--sizes", type=int, nargs="+", default=[20, 40])
     ap.add_argument("--repeat", type=int, default=3, help="runs per mode (the best counts)")
     ap.add_argument("--out", default=os.path.join(HERE, "results"))
+    ap.add_argument("--name", default="kokkos", help="name of the CSV, plot and logs")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
 
@@ -80,7 +82,7 @@ def main():
         steps = STEPS.get(n, max(10, int(2e6 / (4 * n**3))))
         by_mode = {}
         for mode in MODES:
-            row = run_mode(mode, n, steps, args.out, args.repeat)
+            row = run_mode(mode, n, steps, args.out, args.repeat, args.name)
             by_mode[mode] = row
             rows.append(row)
             print(f"n={n:3d} atoms={row['atoms']:7d} {mode:9s} {row['us_wall']:7.3f} us/atom-step"
@@ -95,13 +97,14 @@ def main():
         print(f"        kk/CPU on 1 core {kk_cost:.3f}; efficiency kk 2 threads {eff_threads:.3f},"
               f" kk 2 ranks {eff_mpi_kk:.3f}, CPU 2 ranks {eff_mpi_cpu:.3f}", flush=True)
 
-    path = os.path.join(args.out, "kokkos.csv")
+    path = os.path.join(args.out, f"{args.name}.csv")
     with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()
         writer.writerows(rows)
     print(f"wrote {path}")
-    subprocess.run([sys.executable, os.path.join(HERE, "plot_kokkos.py"), args.out], check=True)
+    subprocess.run([sys.executable, os.path.join(HERE, "plot_kokkos.py"), args.out, args.name],
+                   check=True)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
-"""Plot results/kokkos.csv (written by kokkos.py): microseconds per
-automaton-step (wall clock) of each mode for each cube size.
+"""Plot results/NAME.csv (written by kokkos.py; NAME kokkos by default):
+microseconds per automaton-step (wall clock) of each mode for each cube size.
 
-Usage: /usr/bin/python3 plot_kokkos.py [results]
+Usage: /usr/bin/python3 plot_kokkos.py [results [NAME]]
 """
 
 import csv
@@ -16,7 +16,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "results")
-    with open(os.path.join(out, "kokkos.csv")) as f:
+    name = sys.argv[2] if len(sys.argv) > 2 else "kokkos"
+    with open(os.path.join(out, f"{name}.csv")) as f:
         rows = list(csv.DictReader(f))
     modes = list(dict.fromkeys(r["mode"] for r in rows))
     sizes = sorted({int(r["atoms"]) for r in rows})
@@ -31,10 +32,12 @@ def main():
     ax.set_xticks(range(len(modes)))
     ax.set_xticklabels(modes)
     ax.set_ylabel("wall-clock us per automaton-step")
-    ax.set_title("pair mca: CPU styles and Kokkos (OpenMP) variants, free fcc cubes")
+    version = {"kokkos": "LAMMPS 29 Sep 2021 + Kokkos 3.4",
+               "kokkos5": "LAMMPS 4 Jul 2026 + Kokkos 5"}.get(name, name)
+    ax.set_title(f"pair mca, CPU styles and Kokkos (OpenMP) variants ({version})", fontsize=9)
     ax.legend()
     fig.tight_layout()
-    path = os.path.join(out, "kokkos.png")
+    path = os.path.join(out, f"{name}.png")
     fig.savefig(path, dpi=120)
     print(f"wrote {path}")
 

@@ -5,10 +5,13 @@ mpirun), one set for each build made by ``tools/mca``:
 
 * ``current``: LAMMPS 4 Jul 2026, directory in $MCA_BUILD_CURRENT
 * ``kokkos``:  LAMMPS 29 Sep 2021 + Kokkos, directory in $MCA_BUILD_KOKKOS
+* ``kokkos5``: LAMMPS 4 Jul 2026 + Kokkos 5, directory in $MCA_BUILD_KOKKOS5
+  (only where asked for: ``tools/mca test-kokkos5``)
 
 A test that takes a ``build`` argument runs once per build.  Set
 MCA_TEST_BUILDS=current (or kokkos) to restrict the runs while developing;
-``tools/mca test`` always runs both.
+``tools/mca test`` always runs current and kokkos.  The Kokkos tests use the
+build named by MCA_TEST_KOKKOS (default kokkos).
 """
 
 import os
@@ -20,7 +23,8 @@ import numpy as np
 
 UNITTEST = pathlib.Path(__file__).resolve().parent
 ROOT = UNITTEST.parent
-BUILD_NAMES = ("current", "kokkos")
+BUILD_NAMES = ("current", "kokkos", "kokkos5")
+DEFAULT_BUILDS = ("current", "kokkos")
 
 
 class Build:
@@ -83,7 +87,7 @@ def mpi_environment():
 
 
 def available_builds():
-    wanted = os.environ.get("MCA_TEST_BUILDS", ",".join(BUILD_NAMES)).split(",")
+    wanted = os.environ.get("MCA_TEST_BUILDS", ",".join(DEFAULT_BUILDS)).split(",")
     builds = []
     for name in wanted:
         name = name.strip()
@@ -114,6 +118,14 @@ def build_named(name):
         if b.name == name:
             return b
     return None
+
+
+def kokkos_build_name():
+    """The build whose Kokkos styles the Kokkos tests run (MCA_TEST_KOKKOS)."""
+    name = os.environ.get("MCA_TEST_KOKKOS", "kokkos")
+    if name not in ("kokkos", "kokkos5"):
+        raise RuntimeError(f"MCA_TEST_KOKKOS={name}: kokkos or kokkos5")
+    return name
 
 
 # ---------------------------------------------------------------------------

@@ -43,15 +43,15 @@ static constexpr int MCA_NGROW = 20;
 
 /* ---------------------------------------------------------------------- */
 
-AtomVecMCAKokkos::AtomVecMCAKokkos(LAMMPS *lmp) : AtomVecMCAStyle<AtomVecKokkos>(lmp)
+AtomVecMCAKokkos::AtomVecMCAKokkos(LAMMPS *lmp) :
+    MCA_KK_ATOMVEC_BASE(lmp) AtomVecMCAStyle<AtomVecKokkos>(lmp)
 {
   MCAKokkos::require_kokkos(lmp, "Atom style mca/kk");
+  owns_arrays = 0;    // the DualViews below own the MCA fields
+#ifndef MCA_HAVE_KK_AVEC_VIRTUAL
   commKK = (CommKokkos *) comm;    // AtomVecKokkos leaves it to the styles
-  owns_arrays = 0;                 // the DualViews below own the MCA fields
   no_comm_vel_flag = 0;
   no_border_vel_flag = 1;
-#ifdef MCA_HAVE_ATOM_QUAT
-  error->all(FLERR, "Atom style mca/kk supports the KOKKOS package of LAMMPS 29 Sep 2021 only");
 #endif
 }
 
@@ -69,12 +69,17 @@ AtomVecMCAKokkos::~AtomVecMCAKokkos()
   memoryKK->destroy_kokkos(k_epsp, epsp);
   memoryKK->destroy_kokkos(k_damage, damage);
   memoryKK->destroy_kokkos(k_quat, quat);
+#ifdef MCA_HAVE_ATOM_QUAT
+  atom->quat = nullptr;    // was the host view of k_quat: Atom must not free it
+#endif
 }
 
 /* ----------------------------------------------------------------------
-   exchange and borders through the host (see the header); set before
-   CommKokkos::init() copies it, at every init since the package command
-   may have reset it
+   exchange and borders (and since 2023 sorting) through the host (see the
+   header); set before CommKokkos::init() and AtomKokkos::init() copy it,
+   at every init since the package command may have reset it.  The sync
+   masks of the field lists get the bits of the MCA fields, which
+   AtomVecKokkos does not know
 ------------------------------------------------------------------------- */
 
 void AtomVecMCAKokkos::init()
@@ -85,7 +90,15 @@ void AtomVecMCAKokkos::init()
                "Atom style mca/kk: atom_style mca grows {} fields, mca/kk {}: "
                "the Kokkos style is out of date",
                ngrow, MCA_NGROW);
-  lmp->kokkos->exchange_comm_classic = 1;
+  MCAKokkos::use_host_exchange(lmp->kokkos);
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+  set_atom_masks();
+  const uint64_t mca_fields = MCA_GEOMETRY_MASK | MCA_STATE_MASK | MCA_QUAT_MASK;
+  datamask_grow |= mca_fields;
+  datamask_border |= mca_fields;
+  datamask_border_vel |= mca_fields;
+  datamask_exchange |= mca_fields;
+#endif
 }
 
 /* ----------------------------------------------------------------------
@@ -130,6 +143,9 @@ void AtomVecMCAKokkos::grow(int n)
   memoryKK->grow_kokkos(atomKK->k_rmass, atomKK->rmass, nmax, "atom:rmass");
 
   memoryKK->grow_kokkos(k_quat, quat, nmax, 4, "atom:quat");
+#ifdef MCA_HAVE_ATOM_QUAT
+  atom->quat = quat;    // the field lists reach the orientation through Atom
+#endif
   memoryKK->grow_kokkos(k_packing, packing, nmax, "atom:mca_packing");
   memoryKK->grow_kokkos(k_volume, volume, nmax, "atom:mca_volume");
   memoryKK->grow_kokkos(k_inertia, inertia, nmax, "atom:mca_inertia");
@@ -161,16 +177,54 @@ void AtomVecMCAKokkos::grow_pointers()
   x = atomKK->x;
   v = atomKK->v;
   f = atomKK->f;
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+  // and the generic Kokkos communication of AtomVecKokkos through these
+  d_tag = atomKK->k_tag.view_device();
+  h_tag = atomKK->k_tag.view_host();
+  d_type = atomKK->k_type.view_device();
+  h_type = atomKK->k_type.view_host();
+  d_mask = atomKK->k_mask.view_device();
+  h_mask = atomKK->k_mask.view_host();
+  d_image = atomKK->k_image.view_device();
+  h_image = atomKK->k_image.view_host();
+  d_x = atomKK->k_x.view_device();
+  h_x = atomKK->k_x.view_hostkk();
+  d_v = atomKK->k_v.view_device();
+  h_v = atomKK->k_v.view_hostkk();
+  d_f = atomKK->k_f.view_device();
+  h_f = atomKK->k_f.view_hostkk();
+  d_molecule = atomKK->k_molecule.view_device();
+  h_molecule = atomKK->k_molecule.view_host();
+  d_nspecial = atomKK->k_nspecial.view_device();
+  h_nspecial = atomKK->k_nspecial.view_hostkk();
+  d_special = atomKK->k_special.view_device();
+  h_special = atomKK->k_special.view_hostkk();
+  d_num_bond = atomKK->k_num_bond.view_device();
+  h_num_bond = atomKK->k_num_bond.view_host();
+  d_bond_type = atomKK->k_bond_type.view_device();
+  h_bond_type = atomKK->k_bond_type.view_hostkk();
+  d_bond_atom = atomKK->k_bond_atom.view_device();
+  h_bond_atom = atomKK->k_bond_atom.view_hostkk();
+  d_radius = atomKK->k_radius.view_device();
+  h_radius = atomKK->k_radius.view_hostkk();
+  d_rmass = atomKK->k_rmass.view_device();
+  h_rmass = atomKK->k_rmass.view_hostkk();
+  d_omega = atomKK->k_omega.view_device();
+  h_omega = atomKK->k_omega.view_hostkk();
+  d_torque = atomKK->k_torque.view_device();
+  h_torque = atomKK->k_torque.view_hostkk();
+#else
   h_x = atomKK->k_x.view_host();
   h_v = atomKK->k_v.view_host();
   h_f = atomKK->k_f.view_host();
+#endif
 }
 
 /* ----------------------------------------------------------------------
    apply a DualView operation to every view selected by mask
 ------------------------------------------------------------------------- */
 
-template <class Apply> void AtomVecMCAKokkos::for_each_view(unsigned int mask, Apply apply)
+template <class Apply> void AtomVecMCAKokkos::for_each_view(MCAKokkos::mask_t mask, Apply apply)
 {
   if (mask & X_MASK) apply(atomKK->k_x);
   if (mask & V_MASK) apply(atomKK->k_v);
@@ -209,35 +263,18 @@ template <class Apply> void AtomVecMCAKokkos::for_each_view(unsigned int mask, A
   if (mask & MCA_QUAT_MASK) apply(k_quat);
 }
 
-void AtomVecMCAKokkos::sync(ExecutionSpace space, unsigned int mask)
+void AtomVecMCAKokkos::sync(ExecutionSpace space, MCAKokkos::mask_t mask)
 {
-  if (space == Device)
-    for_each_view(mask, [](auto &view) {
-      view.template sync<LMPDeviceType>();
-    });
-  else
-    for_each_view(mask, [](auto &view) {
-      view.template sync<LMPHostType>();
-    });
+  for_each_view(mask, [space](auto &view) {
+    MCAKokkos::sync_view(view, space);
+  });
 }
 
-void AtomVecMCAKokkos::modified(ExecutionSpace space, unsigned int mask)
+void AtomVecMCAKokkos::modified(ExecutionSpace space, MCAKokkos::mask_t mask)
 {
-  if (space == Device)
-    for_each_view(mask, [](auto &view) {
-      view.template modify<LMPDeviceType>();
-    });
-  else
-    for_each_view(mask, [](auto &view) {
-      view.template modify<LMPHostType>();
-    });
-}
-
-// copies are not overlapped with computation: a plain sync is correct and
-// the MCA styles do not request overlapping transfers
-void AtomVecMCAKokkos::sync_overlapping_device(ExecutionSpace space, unsigned int mask)
-{
-  sync(space, mask);
+  for_each_view(mask, [space](auto &view) {
+    MCAKokkos::modify_view(view, space);
+  });
 }
 
 void AtomVecMCAKokkos::sync_host()
@@ -248,6 +285,48 @@ void AtomVecMCAKokkos::sync_host()
 void AtomVecMCAKokkos::modified_host()
 {
   atomKK->modified(Host, ALL_MASK);
+}
+
+/* ----------------------------------------------------------------------
+   reaching a device path that init() switched off is an internal error
+------------------------------------------------------------------------- */
+
+void AtomVecMCAKokkos::host_exchange_only(const char *what)
+{
+  error->one(FLERR,
+             "Atom style mca/kk {} on the host only (the link table of its automata "
+             "lives in a fix), but the device path was called: please report this",
+             what);
+}
+
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+
+/* ----------------------------------------------------------------------
+   LAMMPS 2023 and later: copies are not overlapped with computation, a
+   plain sync is correct; atoms are sorted on the host (init())
+------------------------------------------------------------------------- */
+
+void AtomVecMCAKokkos::sync_pinned(ExecutionSpace space, uint64_t mask, int)
+{
+  sync(space, mask);
+}
+
+void AtomVecMCAKokkos::sort_kokkos(Kokkos::BinSort<KeyViewType, BinOp> &)
+{
+  host_exchange_only("sorts atoms");
+}
+
+#else
+
+/* ----------------------------------------------------------------------
+   LAMMPS 2021
+------------------------------------------------------------------------- */
+
+// copies are not overlapped with computation: a plain sync is correct and
+// the MCA styles do not request overlapping transfers
+void AtomVecMCAKokkos::sync_overlapping_device(ExecutionSpace space, unsigned int mask)
+{
+  sync(space, mask);
 }
 
 /* ----------------------------------------------------------------------
@@ -430,37 +509,31 @@ void AtomVecMCAKokkos::unpack_comm_vel_kokkos(const int &n, const int &first,
    the classic communication); reaching these is an internal error
 ------------------------------------------------------------------------- */
 
-void AtomVecMCAKokkos::host_exchange_only(const char *what)
-{
-  error->one(FLERR,
-             "Atom style mca/kk sends {} through the host communication only, but the device "
-             "path was called: use 'package kokkos comm no' or report this",
-             what);
-}
-
 int AtomVecMCAKokkos::pack_border_kokkos(int, DAT::tdual_int_2d, DAT::tdual_xfloat_2d, int, int,
                                          int *, ExecutionSpace)
 {
-  host_exchange_only("ghost atoms");
+  host_exchange_only("sends ghost atoms");
   return 0;
 }
 
 void AtomVecMCAKokkos::unpack_border_kokkos(const int &, const int &, const DAT::tdual_xfloat_2d &,
                                             ExecutionSpace)
 {
-  host_exchange_only("ghost atoms");
+  host_exchange_only("sends ghost atoms");
 }
 
 int AtomVecMCAKokkos::pack_exchange_kokkos(const int &, DAT::tdual_xfloat_2d &, DAT::tdual_int_1d,
                                            DAT::tdual_int_1d, ExecutionSpace, int, X_FLOAT, X_FLOAT)
 {
-  host_exchange_only("migrating atoms");
+  host_exchange_only("sends migrating atoms");
   return 0;
 }
 
 int AtomVecMCAKokkos::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &, int, int, int, X_FLOAT,
                                              X_FLOAT, ExecutionSpace)
 {
-  host_exchange_only("migrating atoms");
+  host_exchange_only("sends migrating atoms");
   return 0;
 }
+
+#endif

@@ -28,20 +28,31 @@ AtomStyle(mca/kk/host,AtomVecMCAKokkos);
 
 namespace LAMMPS_NS {
 
-// sync masks of the MCA fields (bits that only the DPD styles use otherwise)
-enum : unsigned int {
-  MCA_GEOMETRY_MASK = 0x02000000,    // packing, volume, inertia
-  MCA_STATE_MASK = 0x04000000,       // smean, stress, seq, eeq, epsp, damage
-  MCA_QUAT_MASK = 0x08000000         // orientation
+// sync masks of the MCA fields: bits no field of atom_style mca uses
+// otherwise (those of the DPD styles in 2021; unused bits above 2023's)
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+enum : uint64_t {
+  MCA_GEOMETRY_MASK = 0x0100000000000000,    // packing, volume, inertia
+  MCA_STATE_MASK = 0x0200000000000000,       // smean, stress, seq, eeq, epsp, damage
+  MCA_QUAT_MASK = 0x0400000000000000         // orientation
 };
+#else
+enum : unsigned int {
+  MCA_GEOMETRY_MASK = 0x02000000,
+  MCA_STATE_MASK = 0x04000000,
+  MCA_QUAT_MASK = 0x08000000
+};
+#endif
 
 /* ----------------------------------------------------------------------
    atom_style mca/kk: the fields of atom_style mca in DualViews.  Positions,
-   velocities and spins of the ghosts are sent on the device every step;
-   atoms and ghost shells are exchanged through the host ("classic")
-   communication with the generic field lists of atom_style mca, because
-   the link table that travels with each automaton lives in a fix, which
-   the KOKKOS communication of LAMMPS 2021 cannot send on the device
+   velocities and spins of the ghosts are sent on the device every step
+   (by this class in 2021, by the mask-driven packing of AtomVecKokkos
+   since 2023); atoms and ghost shells are exchanged through the host
+   ("classic" or "legacy") communication with the generic field lists of
+   atom_style mca, because the link table that travels with each
+   automaton lives in a fix, which the KOKKOS communication cannot send
+   on the device
 ------------------------------------------------------------------------- */
 
 class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
@@ -53,6 +64,17 @@ class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
   void grow(int) override;
   void grow_pointers() override;
 
+  void sync(ExecutionSpace space, MCAKokkos::mask_t mask) override;
+  void modified(ExecutionSpace space, MCAKokkos::mask_t mask) override;
+  void sync_host() override;
+  void modified_host() override;
+
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+  void sync_pinned(ExecutionSpace space, uint64_t mask, int async_flag = 0) override;
+  void sort_kokkos(Kokkos::BinSort<KeyViewType, BinOp> &Sorter) override;
+#else
+  void sync_overlapping_device(ExecutionSpace space, unsigned int mask) override;
+
   // host communication: the generic field lists (AtomVecKokkos packs x, v, f only)
   int pack_comm_vel(int, int *, double *, int, int *) override;
   void unpack_comm_vel(int, int, double *) override;
@@ -61,10 +83,6 @@ class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
   void data_vel(int, char **) override;
   void pack_vel(double **) override;
   void write_vel(FILE *, int, double **) override;
-
-  void sync(ExecutionSpace space, unsigned int mask) override;
-  void modified(ExecutionSpace space, unsigned int mask) override;
-  void sync_overlapping_device(ExecutionSpace space, unsigned int mask) override;
 
   int pack_comm_vel_kokkos(const int &n, const DAT::tdual_int_2d &list, const int &iswap,
                            const DAT::tdual_xfloat_2d &buf, const int &pbc_flag,
@@ -81,9 +99,7 @@ class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
                            ExecutionSpace space, int dim, X_FLOAT lo, X_FLOAT hi) override;
   int unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf, int nrecv, int nlocal, int dim,
                              X_FLOAT lo, X_FLOAT hi, ExecutionSpace space) override;
-
-  void sync_host() override;
-  void modified_host() override;
+#endif
 
   // the MCA fields; the host pointers of MCAAtomFields alias their host views
   MCAKokkos::dual_int_1d k_packing;
@@ -91,13 +107,15 @@ class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
   MCAKokkos::dual_double_2d k_stress, k_quat;
 
  private:
-  template <class Apply> void for_each_view(unsigned int mask, Apply apply);
+  template <class Apply> void for_each_view(MCAKokkos::mask_t mask, Apply apply);
+  void host_exchange_only(const char *what);
+#ifndef MCA_HAVE_KK_AVEC_VIRTUAL
   template <class DeviceType>
   int pack_comm_vel_on(int n, const DAT::tdual_int_2d &list, int iswap,
                        const DAT::tdual_xfloat_2d &buf, int pbc_flag, const int pbc[]);
   template <class DeviceType>
   void unpack_comm_vel_on(int n, int first, const DAT::tdual_xfloat_2d &buf);
-  void host_exchange_only(const char *what);
+#endif
 };
 
 }    // namespace LAMMPS_NS

@@ -35,10 +35,12 @@ struct Reaction {
   {
     for (int k = 0; k < 3; k++) f[k] += rhs.f[k];
   }
+#if MCA_KK_VOLATILE_JOIN
   KOKKOS_INLINE_FUNCTION void operator+=(const volatile Reaction &rhs) volatile
   {
     for (int k = 0; k < 3; k++) f[k] += rhs.f[k];
   }
+#endif
 };
 
 template <class DeviceType> struct MCASetVelocity {

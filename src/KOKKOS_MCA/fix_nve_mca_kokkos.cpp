@@ -100,7 +100,7 @@ template <class DeviceType> void FixNVEMCAKokkos<DeviceType>::init()
 
 template <class DeviceType> template <bool INITIAL> void FixNVEMCAKokkos<DeviceType>::integrate()
 {
-  const unsigned int read = X_MASK | V_MASK | F_MASK | OMEGA_MASK | TORQUE_MASK | RMASS_MASK |
+  const MCAKokkos::mask_t read = X_MASK | V_MASK | F_MASK | OMEGA_MASK | TORQUE_MASK | RMASS_MASK |
       MASK_MASK | MCA_GEOMETRY_MASK | MCA_QUAT_MASK;
   atomKK->sync(execution_space, read);
 

@@ -29,6 +29,11 @@
      styles, the switch for the host "classic" exchange) have one macro
      each below, selected by the probe MCA_HAVE_KK_FLOAT (KOKKOS of 2023
      and later) written by cmake/Modules/Packages/MCA.cmake.
+   - The atom style base class changed more: since 2023 AtomVecKokkos
+     derives virtually from AtomVec, syncs with 64-bit masks and packs
+     the fields AtomKokkos knows itself (probe MCA_HAVE_KK_AVEC_VIRTUAL);
+     mask_t, sync_view, modify_view, MCA_KK_ATOMVEC_BASE and
+     use_host_exchange below cover what atom_style mca/kk needs.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_MCA_KOKKOS_COMPAT_H
@@ -79,6 +84,13 @@ namespace MCAKokkos {
                       what);
   }
 
+  // first base class of a Kokkos style whose members need an initialized
+  // Kokkos (a duplicated ScatterView constructs an execution space instance
+  // since Kokkos 4): stops with require_kokkos's message before them
+  struct RequiresKokkos {
+    RequiresKokkos(LAMMPS *lmp, const char *what) { require_kokkos(lmp, what); }
+  };
+
   // a perpetual full neighbour list built on the device.  pair mca/kk does
   // not read it (the links carry their partners), but without any device
   // request the KOKKOS neighbour class checks the displacements for
@@ -100,6 +112,81 @@ namespace MCAKokkos {
 #endif
   }
 
+  // sync masks of the atom styles
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+  typedef uint64_t mask_t;
+#else
+  typedef unsigned int mask_t;
+#endif
+
+  // sync or mark modified one DualView of an atom style for a LAMMPS
+  // execution space.  Since 2023 the views of AtomKokkos are TransformViews
+  // with a third copy, the Kokkos host view (HostKK), which differs from
+  // the legacy host arrays only in mixed precision; other views have one
+  // host copy for both
+  namespace Detail {
+    template <class View> auto sync_hostkk(View &view, int) -> decltype(view.sync_hostkk())
+    {
+      return view.sync_hostkk();
+    }
+    template <class View> void sync_hostkk(View &view, long)
+    {
+      view.sync_host();
+    }
+    template <class View> auto modify_hostkk(View &view, int) -> decltype(view.modify_hostkk())
+    {
+      return view.modify_hostkk();
+    }
+    template <class View> void modify_hostkk(View &view, long)
+    {
+      view.modify_host();
+    }
+  }    // namespace Detail
+
+  template <class View> void sync_view(View &view, ExecutionSpace space)
+  {
+    if (space == Device) {
+      view.sync_device();
+      return;
+    }
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+    if (space == HostKK) {
+      Detail::sync_hostkk(view, 0);
+      return;
+    }
+#endif
+    view.sync_host();
+  }
+
+  template <class View> void modify_view(View &view, ExecutionSpace space)
+  {
+    if (space == Device) {
+      view.modify_device();
+      return;
+    }
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+    if (space == HostKK) {
+      Detail::modify_hostkk(view, 0);
+      return;
+    }
+#endif
+    view.modify_host();
+  }
+
+  // atoms and ghost shells through the host communication of LAMMPS
+  // (CommBrick with the field lists of the atom style), which sends the
+  // link table of the links fix with its atoms; since 2023 atoms are also
+  // sorted on the host for the same reason
+  template <class KokkosLMPType> void use_host_exchange(KokkosLMPType *kokkos)
+  {
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+    kokkos->exchange_comm_legacy = 1;
+    kokkos->sort_legacy = 1;
+#else
+    kokkos->exchange_comm_classic = 1;
+#endif
+  }
+
   // execution space tag of LAMMPS for a device type
   template <class DeviceType> inline ExecutionSpace space_of()
   {
@@ -108,6 +195,19 @@ namespace MCAKokkos {
 
 }    // namespace MCAKokkos
 }    // namespace LAMMPS_NS
+
+// the AtomVec base of a Kokkos atom style is virtual since 2023: the most
+// derived class constructs it
+#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
+#define MCA_KK_ATOMVEC_BASE(lmp) AtomVec(lmp),
+#else
+#define MCA_KK_ATOMVEC_BASE(lmp)
+#endif
+
+// Kokkos 3 joins the values of a reduction through volatile references
+// (a value type needs a volatile operator+=); Kokkos 4 and later do not,
+// and C++20 deprecates compound assignment to volatile operands
+#define MCA_KK_VOLATILE_JOIN (KOKKOS_VERSION < 40000)
 
 // forward communication of per-atom data of a pair style, Kokkos path
 #ifdef MCA_HAVE_KK_FLOAT

@@ -38,8 +38,8 @@ using namespace MCAKernels;
 // per-automaton sums of the two link passes (columns): the predictor's
 // fabric tensor F and strain moment M, and the
 // link pass's force, torque and traction moment B (see PairMCA)
-enum PredictorSum { PS_FABRIC = 0, PS_STRAIN = 6, PS_SIZE = 12 };
-enum LinkSum { LS_FORCE = 0, LS_TORQUE = 3, LS_BMAT = 6, LS_SIZE = 15 };
+constexpr int PS_FABRIC = 0, PS_STRAIN = 6, PS_SIZE = 12;
+constexpr int LS_FORCE = 0, LS_TORQUE = 3, LS_BMAT = 6, LS_SIZE = 15;
 // per-atom energy and virial, when asked for
 enum AtomTally { AT_ENERGY = 0, AT_VIRIAL = 1, AT_SIZE = 7 };
 
@@ -112,12 +112,14 @@ struct MCALinkSums {
     for (int k = 0; k < 6; k++) virial[k] += rhs.virial[k];
     nlong += rhs.nlong;
   }
+#if MCA_KK_VOLATILE_JOIN
   KOKKOS_INLINE_FUNCTION void operator+=(const volatile MCALinkSums &rhs) volatile
   {
     energy += rhs.energy;
     for (int k = 0; k < 6; k++) virial[k] += rhs.virial[k];
     nlong += rhs.nlong;
   }
+#endif
 };
 
 // the virial of a pair force f on atom i at separation del = x_i - x_j,
@@ -531,9 +533,9 @@ template <class DeviceType> struct MCAUnpackForward {
 
 template <class DeviceType>
 PairMCAKokkos<DeviceType>::PairMCAKokkos(LAMMPS *lmp) :
-    PairMCA(lmp), avecKK(nullptr), linksKK(nullptr), kk_nmax(0), tally_nmax(0), chunk_size(0)
+    MCAKokkos::RequiresKokkos(lmp, "Pair style mca/kk"), PairMCA(lmp), avecKK(nullptr),
+    linksKK(nullptr), kk_nmax(0), tally_nmax(0), chunk_size(0)
 {
-  MCAKokkos::require_kokkos(lmp, "Pair style mca/kk");
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
   execution_space = MCAKokkos::space_of<DeviceType>();

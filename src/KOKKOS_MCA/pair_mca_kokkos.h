@@ -70,7 +70,8 @@ template <class DeviceType> struct MCAScatter {
    and stress.
 ------------------------------------------------------------------------- */
 
-template <class DeviceType> class PairMCAKokkos : public PairMCA, public KokkosBase {
+template <class DeviceType>
+class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public KokkosBase {
  public:
   PairMCAKokkos(class LAMMPS *);
   ~PairMCAKokkos() override;

@@ -190,8 +190,9 @@ namespace MCAKernels {
     H_WORK,                   // elastic energy of the link
     H_SIZE
   };
-  // offsets inside a half
-  enum LinkHalf { HALF_SIG = 0, HALF_EPS, HALF_T, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8 };
+  // offsets inside a half (ints: C++20 deprecates adding them to the
+  // LinkHistory enumerators if they were another enumeration)
+  constexpr int HALF_SIG = 0, HALF_EPS = 1, HALF_T = 2, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8;
   enum LinkState { LINK_NONE = 0, LINK_LINKED = 1 };
 
   MCA_INLINE double dot3(const double *a, const double *b)

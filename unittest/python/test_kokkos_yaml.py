@@ -24,14 +24,14 @@ import numpy as np
 import pytest
 import yaml
 
-from mcatest import UNITTEST, build_named
+from mcatest import UNITTEST, build_named, kokkos_build_name
 
 TESTS = UNITTEST / "force-styles" / "tests"
 KOKKOS_ARGS = ("-k", "on", "t", "2", "-sf", "kk")
 
 
 def kokkos_build():
-    build = build_named("kokkos")
+    build = build_named(kokkos_build_name())
     if build is None:
         pytest.skip("the kokkos build is not among the tested builds")
     return build
