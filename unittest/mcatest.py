@@ -20,6 +20,7 @@ import shutil
 import subprocess
 
 import numpy as np
+import pytest
 
 UNITTEST = pathlib.Path(__file__).resolve().parent
 ROOT = UNITTEST.parent
@@ -120,12 +121,17 @@ def build_named(name):
     return None
 
 
-def kokkos_build_name():
-    """The build whose Kokkos styles the Kokkos tests run (MCA_TEST_KOKKOS)."""
+def kokkos_build():
+    """The build whose Kokkos styles the Kokkos tests run (MCA_TEST_KOKKOS,
+    default kokkos); skips the calling test if it is not among the tested
+    builds."""
     name = os.environ.get("MCA_TEST_KOKKOS", "kokkos")
     if name not in ("kokkos", "kokkos5"):
         raise RuntimeError(f"MCA_TEST_KOKKOS={name}: kokkos or kokkos5")
-    return name
+    build = build_named(name)
+    if build is None:
+        pytest.skip(f"the {name} build is not among the tested builds")
+    return build
 
 
 # ---------------------------------------------------------------------------

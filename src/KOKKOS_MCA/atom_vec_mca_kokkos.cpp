@@ -177,43 +177,8 @@ void AtomVecMCAKokkos::grow_pointers()
   x = atomKK->x;
   v = atomKK->v;
   f = atomKK->f;
-#ifdef MCA_HAVE_KK_AVEC_VIRTUAL
-  // and the generic Kokkos communication of AtomVecKokkos through these
-  d_tag = atomKK->k_tag.view_device();
-  h_tag = atomKK->k_tag.view_host();
-  d_type = atomKK->k_type.view_device();
-  h_type = atomKK->k_type.view_host();
-  d_mask = atomKK->k_mask.view_device();
-  h_mask = atomKK->k_mask.view_host();
-  d_image = atomKK->k_image.view_device();
-  h_image = atomKK->k_image.view_host();
-  d_x = atomKK->k_x.view_device();
-  h_x = atomKK->k_x.view_hostkk();
-  d_v = atomKK->k_v.view_device();
-  h_v = atomKK->k_v.view_hostkk();
-  d_f = atomKK->k_f.view_device();
-  h_f = atomKK->k_f.view_hostkk();
-  d_molecule = atomKK->k_molecule.view_device();
-  h_molecule = atomKK->k_molecule.view_host();
-  d_nspecial = atomKK->k_nspecial.view_device();
-  h_nspecial = atomKK->k_nspecial.view_hostkk();
-  d_special = atomKK->k_special.view_device();
-  h_special = atomKK->k_special.view_hostkk();
-  d_num_bond = atomKK->k_num_bond.view_device();
-  h_num_bond = atomKK->k_num_bond.view_host();
-  d_bond_type = atomKK->k_bond_type.view_device();
-  h_bond_type = atomKK->k_bond_type.view_hostkk();
-  d_bond_atom = atomKK->k_bond_atom.view_device();
-  h_bond_atom = atomKK->k_bond_atom.view_hostkk();
-  d_radius = atomKK->k_radius.view_device();
-  h_radius = atomKK->k_radius.view_hostkk();
-  d_rmass = atomKK->k_rmass.view_device();
-  h_rmass = atomKK->k_rmass.view_hostkk();
-  d_omega = atomKK->k_omega.view_device();
-  h_omega = atomKK->k_omega.view_hostkk();
-  d_torque = atomKK->k_torque.view_device();
-  h_torque = atomKK->k_torque.view_hostkk();
-#else
+#ifndef MCA_HAVE_KK_AVEC_VIRTUAL
+  // the host packing of the 2021 AtomVecKokkos reads these
   h_x = atomKK->k_x.view_host();
   h_v = atomKK->k_v.view_host();
   h_f = atomKK->k_f.view_host();
@@ -291,7 +256,7 @@ void AtomVecMCAKokkos::modified_host()
    reaching a device path that init() switched off is an internal error
 ------------------------------------------------------------------------- */
 
-void AtomVecMCAKokkos::host_exchange_only(const char *what)
+void AtomVecMCAKokkos::host_only(const char *what)
 {
   error->one(FLERR,
              "Atom style mca/kk {} on the host only (the link table of its automata "
@@ -313,7 +278,7 @@ void AtomVecMCAKokkos::sync_pinned(ExecutionSpace space, uint64_t mask, int)
 
 void AtomVecMCAKokkos::sort_kokkos(Kokkos::BinSort<KeyViewType, BinOp> &)
 {
-  host_exchange_only("sorts atoms");
+  host_only("sorts atoms");
 }
 
 #else
@@ -512,27 +477,27 @@ void AtomVecMCAKokkos::unpack_comm_vel_kokkos(const int &n, const int &first,
 int AtomVecMCAKokkos::pack_border_kokkos(int, DAT::tdual_int_2d, DAT::tdual_xfloat_2d, int, int,
                                          int *, ExecutionSpace)
 {
-  host_exchange_only("sends ghost atoms");
+  host_only("sends ghost atoms");
   return 0;
 }
 
 void AtomVecMCAKokkos::unpack_border_kokkos(const int &, const int &, const DAT::tdual_xfloat_2d &,
                                             ExecutionSpace)
 {
-  host_exchange_only("sends ghost atoms");
+  host_only("sends ghost atoms");
 }
 
 int AtomVecMCAKokkos::pack_exchange_kokkos(const int &, DAT::tdual_xfloat_2d &, DAT::tdual_int_1d,
                                            DAT::tdual_int_1d, ExecutionSpace, int, X_FLOAT, X_FLOAT)
 {
-  host_exchange_only("sends migrating atoms");
+  host_only("sends migrating atoms");
   return 0;
 }
 
 int AtomVecMCAKokkos::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &, int, int, int, X_FLOAT,
                                              X_FLOAT, ExecutionSpace)
 {
-  host_exchange_only("sends migrating atoms");
+  host_only("sends migrating atoms");
   return 0;
 }
 

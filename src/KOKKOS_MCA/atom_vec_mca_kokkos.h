@@ -108,7 +108,7 @@ class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
 
  private:
   template <class Apply> void for_each_view(MCAKokkos::mask_t mask, Apply apply);
-  void host_exchange_only(const char *what);
+  void host_only(const char *what);
 #ifndef MCA_HAVE_KK_AVEC_VIRTUAL
   template <class DeviceType>
   int pack_comm_vel_on(int n, const DAT::tdual_int_2d &list, int iswap,

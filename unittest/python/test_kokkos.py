@@ -49,7 +49,7 @@ import pathlib
 import numpy as np
 import pytest
 
-from mcatest import build_named, kokkos_build_name, read_dump
+from mcatest import kokkos_build, read_dump
 
 EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "examples"
 
@@ -96,13 +96,6 @@ dump            cmp all custom 1 cmp.dump id xu yu zu ix iy iz vx vy vz fx fy fz
                 omegax omegay omegaz tqx tqy tqz c_mcaprop[*]
 dump_modify     cmp format float %.17g sort id every v_dumpnext
 """.format(early=EARLY)
-
-
-def kokkos_build():
-    build = build_named(kokkos_build_name())
-    if build is None:
-        pytest.skip("the kokkos build is not among the tested builds")
-    return build
 
 
 @functools.lru_cache(maxsize=None)

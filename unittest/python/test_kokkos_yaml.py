@@ -24,17 +24,10 @@ import numpy as np
 import pytest
 import yaml
 
-from mcatest import UNITTEST, build_named, kokkos_build_name
+from mcatest import UNITTEST, kokkos_build
 
 TESTS = UNITTEST / "force-styles" / "tests"
 KOKKOS_ARGS = ("-k", "on", "t", "2", "-sf", "kk")
-
-
-def kokkos_build():
-    build = build_named(kokkos_build_name())
-    if build is None:
-        pytest.skip("the kokkos build is not among the tested builds")
-    return build
 
 
 def lines(text):
