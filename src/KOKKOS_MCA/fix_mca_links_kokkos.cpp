@@ -20,7 +20,6 @@
 #include "fix_mca_links_kokkos.h"
 
 #include "atom.h"
-#include "mca_kernels.h"
 #include "memory.h"
 #include "memory_kokkos.h"
 
@@ -45,8 +44,7 @@ FixMCALinksKokkos::FixMCALinksKokkos(LAMMPS *lmp, int narg, char **arg) :
   memory->destroy(nlinks);
   memory->destroy(partner);
   memory->destroy(history);
-  memory->destroy(smean_step);
-  memory->destroy(smean_law);
+  memory->destroy(atom_state);
   const int capacity = maxlinks;
   maxlinks = 0;
   set_capacity(capacity);
@@ -60,8 +58,7 @@ FixMCALinksKokkos::~FixMCALinksKokkos()
   memoryKK->destroy_kokkos(k_nlinks, nlinks);
   memoryKK->destroy_kokkos(k_partner, partner);
   memoryKK->destroy_kokkos(k_history, history);
-  memoryKK->destroy_kokkos(k_smean_step, smean_step);
-  memoryKK->destroy_kokkos(k_smean_law, smean_law);
+  memoryKK->destroy_kokkos(k_atom_state, atom_state);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -71,7 +68,7 @@ void FixMCALinksKokkos::allocate_rows(int nmax)
   memoryKK->destroy_kokkos(k_partner, partner);
   memoryKK->destroy_kokkos(k_history, history);
   memoryKK->create_kokkos(k_partner, partner, nmax, maxlinks, "mca/links:partner");
-  memoryKK->create_kokkos(k_history, history, nmax, maxlinks * H_SIZE, "mca/links:history");
+  memoryKK->create_kokkos(k_history, history, nmax, maxlinks * row_size, "mca/links:history");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -81,9 +78,8 @@ void FixMCALinksKokkos::grow_arrays(int nmax)
   to_host();
   memoryKK->grow_kokkos(k_nlinks, nlinks, nmax, "mca/links:nlinks");
   memoryKK->grow_kokkos(k_partner, partner, nmax, maxlinks, "mca/links:partner");
-  memoryKK->grow_kokkos(k_history, history, nmax, maxlinks * H_SIZE, "mca/links:history");
-  memoryKK->grow_kokkos(k_smean_step, smean_step, nmax, "mca/links:smean_step");
-  memoryKK->grow_kokkos(k_smean_law, smean_law, nmax, "mca/links:smean_law");
+  memoryKK->grow_kokkos(k_history, history, nmax, maxlinks * row_size, "mca/links:history");
+  memoryKK->grow_kokkos(k_atom_state, atom_state, nmax, atom_size, "mca/links:atom_state");
   host_changed();
 }
 
@@ -94,8 +90,7 @@ void FixMCALinksKokkos::to_host()
   k_nlinks.sync_host();
   k_partner.sync_host();
   k_history.sync_host();
-  k_smean_step.sync_host();
-  k_smean_law.sync_host();
+  k_atom_state.sync_host();
 }
 
 void FixMCALinksKokkos::host_changed()
@@ -103,8 +98,7 @@ void FixMCALinksKokkos::host_changed()
   k_nlinks.modify_host();
   k_partner.modify_host();
   k_history.modify_host();
-  k_smean_step.modify_host();
-  k_smean_law.modify_host();
+  k_atom_state.modify_host();
 }
 
 void FixMCALinksKokkos::to_device()
@@ -112,14 +106,12 @@ void FixMCALinksKokkos::to_device()
   k_nlinks.sync_device();
   k_partner.sync_device();
   k_history.sync_device();
-  k_smean_step.sync_device();
-  k_smean_law.sync_device();
+  k_atom_state.sync_device();
 }
 
-// the pair style changes only the history and the mean-stress record
+// the pair style changes only the history and the law state
 void FixMCALinksKokkos::device_changed()
 {
   k_history.modify_device();
-  k_smean_step.modify_device();
-  k_smean_law.modify_device();
+  k_atom_state.modify_device();
 }

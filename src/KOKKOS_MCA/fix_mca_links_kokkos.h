@@ -50,7 +50,7 @@ class FixMCALinksKokkos : public FixMCALinks {
   MCAKokkos::dual_int_1d k_nlinks;
   MCAKokkos::dual_tagint_2d k_partner;
   MCAKokkos::dual_double_2d k_history;
-  MCAKokkos::dual_double_1d k_smean_step, k_smean_law;
+  MCAKokkos::dual_double_2d k_atom_state;
 
  protected:
   void allocate_rows(int nmax) override;

@@ -23,7 +23,7 @@
 #include "atom_masks.h"
 #include "memory_kokkos.h"
 
-#include "mca_kernels.h"
+#include "mca_prescribe.h"
 
 using namespace LAMMPS_NS;
 

@@ -23,7 +23,7 @@
 #include "atom_masks.h"
 #include "atom_vec_mca_kokkos.h"
 #include "error.h"
-#include "mca_kernels.h"
+#include "mca_integration.h"
 
 using namespace LAMMPS_NS;
 

@@ -28,7 +28,7 @@ FixStyle(nve/mca/kk/host,FixNVEMCAKokkos<LMPHostType>);
 namespace LAMMPS_NS {
 
 // velocity Verlet of fix nve/mca as one Kokkos kernel per half step,
-// calling the same kick and drift functions (mca_kernels.h)
+// calling the same kick and drift functions (mca_integration.h)
 template <class DeviceType> class FixNVEMCAKokkos : public FixNVEMCA {
  public:
   FixNVEMCAKokkos(class LAMMPS *, int, char **);

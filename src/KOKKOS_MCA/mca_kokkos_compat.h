@@ -193,6 +193,17 @@ namespace MCAKokkos {
     return ExecutionSpaceFromDevice<DeviceType>::space;
   }
 
+  // a device copy of a host array of plain records (materials by type): one call
+  template <class DeviceType, class T>
+  Kokkos::View<T *, DeviceType> copy_to_device(const T *host, int n, const char *label)
+  {
+    Kokkos::View<T *, DeviceType> device(std::string(label), n);
+    auto mirror = Kokkos::create_mirror_view(device);
+    for (int i = 0; i < n; i++) mirror(i) = host[i];
+    Kokkos::deep_copy(device, mirror);
+    return device;
+  }
+
 }    // namespace MCAKokkos
 }    // namespace LAMMPS_NS
 

@@ -115,7 +115,7 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   // the caches of the base class, in DualViews
   MCAKokkos::dual_int_2d k_partner_cache, k_row_cache;
   // materials by type
-  MCAKokkos::double_1d<DeviceType> d_shear, d_bulk, d_coupling;
+  Kokkos::View<MCAKernels::MCAMaterial *, DeviceType> d_material;
   // per-atom energy and virial
   MCAKokkos::dual_double_1d k_eatom;
   MCAKokkos::dual_double_2d k_vatom;

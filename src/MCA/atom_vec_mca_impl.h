@@ -28,7 +28,7 @@
 #include "domain.h"
 #include "error.h"
 #include "lattice.h"
-#include "mca_kernels.h"
+#include "mca_geometry.h"
 #include "memory.h"
 
 #include <cmath>

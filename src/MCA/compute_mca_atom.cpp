@@ -20,7 +20,7 @@
 #include "error.h"
 #include "fix_mca_links.h"
 #include "mca_compat.h"
-#include "mca_kernels.h"
+#include "mca_link_layout.h"
 #include "memory.h"
 #include "update.h"
 
@@ -89,7 +89,7 @@ double ComputeMCAAtom::value(int i, int w)
   if (!links) return 0.0;
   int n = 0;
   for (int m = 0; m < links->nlinks[i]; m++)
-    if (static_cast<int>(links->history[i][m * MCAKernels::H_SIZE + MCAKernels::H_STATE]) ==
+    if (static_cast<int>(links->history[i][m * links->row_size + MCAKernels::H_STATE]) ==
         MCAKernels::LINK_LINKED)
       n++;
   return n;

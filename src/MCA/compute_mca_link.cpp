@@ -21,7 +21,8 @@
 #include "error.h"
 #include "fix_mca_links.h"
 #include "mca_compat.h"
-#include "mca_kernels.h"
+#include "mca_geometry.h"
+#include "mca_link_layout.h"
 #include "memory.h"
 #include "update.h"
 
@@ -128,7 +129,7 @@ void ComputeMCALink::compute_local()
     for (int m = 0; m < links->nlinks[i]; m++) {
       const tagint other = links->partner[i][m];
       if (tag[i] >= other) continue;
-      const double *h = &links->history[i][m * H_SIZE];
+      const double *h = &links->history[i][m * links->row_size];
       int j = atom->map(other);
       if (j < 0)
         error->one(FLERR,

@@ -19,7 +19,7 @@
 #include "comm.h"
 #include "error.h"
 #include "mca_compat.h"
-#include "mca_kernels.h"
+#include "mca_link_law.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -32,16 +32,30 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 using namespace MCAKernels;
 
-// per-atom values besides the rows: nlinks, smean_step, smean_law
-static constexpr int NPERATOM = 3;
+// the global restart record begins with this marker and names the blocks
+// of the rows (records of earlier versions begin with the capacity, > 0)
+static constexpr double NAMED_BLOCKS = -1.0;
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   fix ID group MCA_LINKS name link_size atom_size [name link_size atom_size ...]
+------------------------------------------------------------------------- */
 
 FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), history(nullptr), smean_step(nullptr),
-    smean_law(nullptr), row_sync(nullptr), lazy_rows(0), list(nullptr)
+    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), history(nullptr), atom_state(nullptr),
+    row_sync(nullptr), lazy_rows(0), list(nullptr)
 {
-  if (narg != 3) error->all(FLERR, "Illegal fix MCA_LINKS command (internal fix of pair mca)");
+  if (narg < 6 || (narg - 3) % 3 != 0)
+    error->all(FLERR,
+               "Illegal fix MCA_LINKS command (internal fix of pair mca: the blocks of its "
+               "link model as name link_size atom_size)");
+  for (int iarg = 3; iarg < narg; iarg += 3)
+    model.add_part(-1, arg[iarg], utils::inumeric(FLERR, arg[iarg + 1], false, lmp),
+                   utils::inumeric(FLERR, arg[iarg + 2], false, lmp));
+  row_size = model.layout().row_size;
+  atom_size = model.layout().atom_size;
+  if (row_size > MAX_ROW_SIZE)
+    error->all(FLERR, "Fix MCA_LINKS: a link row of {} values is longer than the {} supported",
+               row_size, static_cast<int>(MAX_ROW_SIZE));
 
   restart_global = 1;
   restart_peratom = 1;
@@ -64,8 +78,7 @@ FixMCALinks::~FixMCALinks()
   memory->destroy(nlinks);
   memory->destroy(partner);
   memory->destroy(history);
-  memory->destroy(smean_step);
-  memory->destroy(smean_law);
+  memory->destroy(atom_state);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -145,7 +158,7 @@ void FixMCALinks::set_capacity(int capacity)
       if (nlinks[i] > capacity)
         error->one(FLERR, "Cannot reduce the link capacity of pair mca below {} links", nlinks[i]);
       kept_partner.insert(kept_partner.end(), partner[i], partner[i] + nlinks[i]);
-      kept_history.insert(kept_history.end(), history[i], history[i] + nlinks[i] * H_SIZE);
+      kept_history.insert(kept_history.end(), history[i], history[i] + nlinks[i] * row_size);
     }
   }
   maxlinks = capacity;
@@ -154,20 +167,20 @@ void FixMCALinks::set_capacity(int capacity)
     grow_arrays(atom->nmax);
     for (int i = 0; i < atom->nmax; i++) {
       nlinks[i] = 0;
-      smean_step[i] = smean_law[i] = 0.0;
+      for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
     }
   }
   size_t p = 0, h = 0;
   for (int i = 0; i < nlocal && !kept_partner.empty(); i++) {
     std::copy(kept_partner.data() + p, kept_partner.data() + p + nlinks[i], partner[i]);
-    std::copy(kept_history.data() + h, kept_history.data() + h + nlinks[i] * H_SIZE, history[i]);
+    std::copy(kept_history.data() + h, kept_history.data() + h + nlinks[i] * row_size, history[i]);
     p += nlinks[i];
-    h += nlinks[i] * H_SIZE;
+    h += nlinks[i] * row_size;
   }
   host_changed();
 
   // largest record an atom sends when it moves to another processor
-  maxexchange = NPERATOM + maxlinks * (1 + H_SIZE);
+  maxexchange = values_per_atom(maxlinks);
 }
 
 /* ----------------------------------------------------------------------
@@ -179,7 +192,7 @@ void FixMCALinks::allocate_rows(int nmax)
   memory->destroy(partner);
   memory->destroy(history);
   memory->create(partner, nmax, maxlinks, "mca/links:partner");
-  memory->create(history, nmax, maxlinks * H_SIZE, "mca/links:history");
+  memory->create(history, nmax, maxlinks * row_size, "mca/links:history");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -188,7 +201,8 @@ double FixMCALinks::memory_usage()
 {
   const double nmax = atom->nmax;
   return nmax *
-      (sizeof(int) + maxlinks * (sizeof(tagint) + H_SIZE * sizeof(double)) + 2.0 * sizeof(double));
+      (sizeof(int) + maxlinks * (sizeof(tagint) + row_size * sizeof(double)) +
+       atom_size * sizeof(double));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -197,9 +211,8 @@ void FixMCALinks::grow_arrays(int nmax)
 {
   memory->grow(nlinks, nmax, "mca/links:nlinks");
   memory->grow(partner, nmax, maxlinks, "mca/links:partner");
-  memory->grow(history, nmax, maxlinks * H_SIZE, "mca/links:history");
-  memory->grow(smean_step, nmax, "mca/links:smean_step");
-  memory->grow(smean_law, nmax, "mca/links:smean_law");
+  memory->grow(history, nmax, maxlinks * row_size, "mca/links:history");
+  memory->grow(atom_state, nmax, atom_size, "mca/links:atom_state");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -209,9 +222,8 @@ void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
   to_host();
   nlinks[j] = nlinks[i];
   for (int m = 0; m < nlinks[i]; m++) partner[j][m] = partner[i][m];
-  memcpy(history[j], history[i], nlinks[i] * H_SIZE * sizeof(double));
-  smean_step[j] = smean_step[i];
-  smean_law[j] = smean_law[i];
+  memcpy(history[j], history[i], nlinks[i] * row_size * sizeof(double));
+  for (int k = 0; k < atom_size; k++) atom_state[j][k] = atom_state[i][k];
   host_changed();
 }
 
@@ -224,12 +236,11 @@ int FixMCALinks::pack_exchange(int i, double *buf)
   to_host();
   int m = 0;
   buf[m++] = nlinks[i];
-  buf[m++] = smean_step[i];
-  buf[m++] = smean_law[i];
+  for (int k = 0; k < atom_size; k++) buf[m++] = atom_state[i][k];
   for (int k = 0; k < nlinks[i]; k++) {
     buf[m++] = ubuf(partner[i][k]).d;
-    memcpy(&buf[m], &history[i][k * H_SIZE], H_SIZE * sizeof(double));
-    m += H_SIZE;
+    memcpy(&buf[m], &history[i][k * row_size], row_size * sizeof(double));
+    m += row_size;
   }
   return m;
 }
@@ -241,27 +252,22 @@ int FixMCALinks::unpack_exchange(int nlocal, double *buf)
   to_host();
   int m = 0;
   nlinks[nlocal] = static_cast<int>(buf[m++]);
-  smean_step[nlocal] = buf[m++];
-  smean_law[nlocal] = buf[m++];
+  for (int k = 0; k < atom_size; k++) atom_state[nlocal][k] = buf[m++];
   for (int k = 0; k < nlinks[nlocal]; k++) {
     partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
-    memcpy(&history[nlocal][k * H_SIZE], &buf[m], H_SIZE * sizeof(double));
-    m += H_SIZE;
+    memcpy(&history[nlocal][k * row_size], &buf[m], row_size * sizeof(double));
+    m += row_size;
   }
   host_changed();
   return m;
 }
 
 /* ----------------------------------------------------------------------
-   global restart data: capacity, whether the links exist, and the layout
-   of the history rows (files written before layouts were numbered hold
-   H_SIZE, i.e. layout 0)
+   global restart data: a negative marker (files of earlier versions begin
+   with the capacity), capacity, whether the links exist, the order of the
+   elastic block (1000 H_LAYOUT + H_SIZE, as those files had it), the
+   blocks of the model by size and then by name
 ------------------------------------------------------------------------- */
-
-static int history_format()
-{
-  return 1000 * H_LAYOUT + H_SIZE;
-}
 
 void FixMCALinks::write_restart(FILE *fp)
 {
@@ -269,24 +275,55 @@ void FixMCALinks::write_restart(FILE *fp)
   sync_rows();
   to_host();
   if (comm->me == 0) {
-    double list[3] = {(double) maxlinks, (double) created, (double) history_format()};
-    int size = 3 * sizeof(double);
+    std::vector<double> list = {NAMED_BLOCKS, (double) maxlinks, (double) created,
+                                (double) (1000 * H_LAYOUT + H_SIZE),
+                                (double) model.blocks().size()};
+    for (const auto &b : model.blocks()) {
+      list.push_back(b.link_size);
+      list.push_back(b.atom_size);
+    }
+    const std::string names = model.names();
+    const int size = list.size() * sizeof(double) + names.size() + 1;
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 3, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
+    fwrite(names.c_str(), sizeof(char), names.size() + 1, fp);
   }
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   a file is read if its blocks are those of the model (files of earlier
+   versions: the elastic block alone), else refused
+------------------------------------------------------------------------- */
 
 void FixMCALinks::restart(char *buf)
 {
   auto list = (double *) buf;
+  const bool named = list[0] == NAMED_BLOCKS;
+  if (named) list++;
   const int format = static_cast<int>(list[2]);
-  if (format != history_format())
+  if (format != 1000 * H_LAYOUT + H_SIZE)
     error->all(FLERR,
                "Restart file holds MCA links in history layout {} with {} values each; this "
                "version reads layout {} with {}",
                format / 1000, format % 1000, static_cast<int>(H_LAYOUT), static_cast<int>(H_SIZE));
+
+  MCALinkModel file;
+  if (named) {
+    const int nblocks = static_cast<int>(list[3]);
+    auto names = utils::split_words(std::string((char *) &list[4 + 2 * nblocks]));
+    if ((int) names.size() != nblocks) error->all(FLERR, "Invalid MCA links in restart file");
+    for (int b = 0; b < nblocks; b++)
+      file.add_part(-1, names[b], static_cast<int>(list[4 + 2 * b]),
+                    static_cast<int>(list[5 + 2 * b]));
+  } else {
+    file.add_part(PART_ELASTIC, "elastic", H_SIZE, A_SIZE);
+  }
+  if (!model.same_blocks(file))
+    error->all(FLERR,
+               "Restart file holds MCA links with the blocks ({}) as name, values per link, "
+               "values per automaton; the link model of the pair style has ({})",
+               file.describe(), model.describe());
+
   set_capacity(static_cast<int>(list[0]));
   created = static_cast<int>(list[1]);
 }
@@ -326,12 +363,12 @@ void FixMCALinks::unpack_restart(int nlocal, int nth)
 int FixMCALinks::size_restart(int nlocal)
 {
   to_host();
-  return 1 + NPERATOM + nlinks[nlocal] * (1 + H_SIZE);
+  return 1 + values_per_atom(nlinks[nlocal]);
 }
 
 /* ---------------------------------------------------------------------- */
 
 int FixMCALinks::maxsize_restart()
 {
-  return 1 + NPERATOM + maxlinks * (1 + H_SIZE);
+  return 1 + values_per_atom(maxlinks);
 }

@@ -21,6 +21,7 @@ FixStyle(MCA_LINKS,FixMCALinks);
 #define LMP_FIX_MCA_LINKS_H
 
 #include "fix.h"
+#include "mca_link_model.h"
 
 namespace LAMMPS_NS {
 
@@ -30,8 +31,13 @@ namespace LAMMPS_NS {
    the partner's atom ID and the whole link history (both halves, in the
    canonical order lower ID first), so the two owners of a link hold
    identical copies and never need each other's data (between the
-   exchanges of atoms: see MCALinkRowSync).  Rows move with their
-   atom between processors and are written to restart files.
+   exchanges of atoms: see MCALinkRowSync).  Each automaton also keeps the
+   law state of the link model.  Rows and state move with their atom
+   between processors and are written to restart files.
+
+   The fix knows no law: the pair style passes the blocks of its link
+   model (MCALinkModel) as arguments, "name link_size atom_size" each, and
+   the widths of a row and of the state follow from them.
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
@@ -73,14 +79,14 @@ class FixMCALinks : public Fix {
   int maxsize_restart() override;
 
   // link table, maxlinks rows per atom
-  int maxlinks;        // capacity per automaton
-  int *nlinks;         // number of links of each atom
-  tagint **partner;    // atom ID of the partner of each link
-  double **history;    // H_SIZE doubles per link (see mca_kernels.h)
+  int maxlinks;           // capacity per automaton
+  int *nlinks;            // number of links of each atom
+  tagint **partner;       // atom ID of the partner of each link
+  double **history;       // row_size doubles per link (see mca_link_layout.h)
+  double **atom_state;    // atom_size doubles of law state per automaton
 
-  // per-automaton history of the mean-stress law (see pair_style mca)
-  double *smean_step;    // mean stress from the tractions at the last step
-  double *smean_law;     // mean stress the normal law used at the last step
+  MCALinkModel model;    // the blocks of a row and of the state
+  int row_size, atom_size;
 
   int created;    // 1 once the links have been made (kept in restart files)
 
@@ -107,6 +113,8 @@ class FixMCALinks : public Fix {
 
  private:
   class NeighList *list;
+  // values of an automaton's exchange record (a restart record has one more: its length)
+  int values_per_atom(int nlink) const { return 1 + atom_size + nlink * (1 + row_size); }
 };
 
 }    // namespace LAMMPS_NS

@@ -25,7 +25,7 @@
 #include "update.h"
 #include "variable.h"
 
-#include "mca_kernels.h"
+#include "mca_prescribe.h"
 
 #include <cstring>
 

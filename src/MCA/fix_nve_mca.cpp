@@ -20,7 +20,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
-#include "mca_kernels.h"
+#include "mca_integration.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;

@@ -21,19 +21,18 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_mca.h"
+#include "pair_mca_host.h"
 
 #include "atom.h"
 #include "atom_vec_mca.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_mca_links.h"
 #include "force.h"
 #include "mca_compat.h"
-#include "mca_kernels.h"
+#include "mca_link_passes.h"
 #include "memory.h"
-#include "modify.h"
-#include "neigh_list.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <cmath>
@@ -42,16 +41,39 @@
 using namespace LAMMPS_NS;
 using namespace MCAKernels;
 
-static const char FIX_LINKS_ID[] = "MCA_LINKS";
+// restart files mark their layout with a negative first value (those of
+// earlier versions begin with the link tolerance, >= 0)
+static constexpr double RESTART_NAMED_MATERIALS = -2.0;
+
+PairMCA::HostData PairMCA::host_data()
+{
+  HostData d;
+  static_cast<MCAHostLinks &>(d) = host_links();
+  d.x_ = atom->x;
+  d.omega_ = atom->omega;
+  d.f_ = atom->f;
+  d.torque_ = atom->torque;
+  d.type_ = atom->type;
+  d.packing_ = avec->packing;
+  d.material_ = materials.type;
+  d.pred_stiffness_ = pred_stiffness;
+  d.dsmean_ = dsmean;
+  d.smean_pred_ = smean_pred;
+  d.link_count_ = link_count;
+  d.fabric_ = predictor_sums;    // its PS_FABRIC columns
+  d.stress_ = avec->stress;
+  d.smean_ = avec->smean;
+  d.seq_ = avec->seq;
+  d.eeq_ = avec->eeq;
+  return d;
+}
 
 /* ---------------------------------------------------------------------- */
 
 PairMCA::PairMCA(LAMMPS *lmp) :
-    Pair(lmp), links(nullptr), youngs(nullptr), poisson(nullptr), density(nullptr), shear(nullptr),
-    bulk(nullptr), coupling(nullptr), material_set(nullptr), link_allowed(nullptr),
-    link_tolerance(nullptr), link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr),
-    smean_pred(nullptr), bmat_atom(nullptr), fabric_atom(nullptr), pred_strain(nullptr),
-    partner_cache(nullptr), row_cache(nullptr), avec(nullptr)
+    PairMCALinked(lmp, "Pair mca"), materials(lmp), link_allowed(nullptr), link_tolerance(nullptr),
+    link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr), smean_pred(nullptr),
+    predictor_sums(nullptr), bmat(nullptr), avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -64,14 +86,10 @@ PairMCA::PairMCA(LAMMPS *lmp) :
 
   tolerance_default = 0.02;
   cutoff_user = -1.0;
-  capacity_user = 0;
-  cut_global = 0.0;
   nmax = 0;
-  cache_rows = cache_cols = 0;
-  cache_nlocal = -1;
-  partner_rows_stale = 0;
   comm_stage = STAGE_COUNT;
-  nstretched = 0;
+  restart_named = 0;
+  select_parts({});
 }
 
 /* ---------------------------------------------------------------------- */
@@ -82,23 +100,10 @@ PairMCA::~PairMCA()
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
-    memory->destroy(youngs);
-    memory->destroy(poisson);
-    memory->destroy(density);
-    memory->destroy(shear);
-    memory->destroy(bulk);
-    memory->destroy(coupling);
-    memory->destroy(material_set);
     memory->destroy(link_allowed);
     memory->destroy(link_tolerance);
   }
   destroy_peratom();
-  memory->destroy(partner_cache);
-  memory->destroy(row_cache);
-  // the MCA_LINKS fix is kept: a pair_style mca command issued again (e.g.
-  // to change a setting) finds the links and their history; clear removes it
-  auto fix = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
-  if (fix && fix->row_sync == this) fix->row_sync = nullptr;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -109,18 +114,10 @@ void PairMCA::allocate()
   const int n = atom->ntypes + 1;
   memory->create(setflag, n, n, "pair:setflag");
   memory->create(cutsq, n, n, "pair:cutsq");
-  memory->create(youngs, n, "pair:youngs");
-  memory->create(poisson, n, "pair:poisson");
-  memory->create(density, n, "pair:density");
-  memory->create(shear, n, "pair:shear");
-  memory->create(bulk, n, "pair:bulk");
-  memory->create(coupling, n, "pair:coupling");
-  memory->create(material_set, n, "pair:material_set");
   memory->create(link_allowed, n, n, "pair:link_allowed");
   memory->create(link_tolerance, n, n, "pair:link_tolerance");
+  materials.allocate(atom->ntypes);
   for (int i = 0; i < n; i++) {
-    material_set[i] = 0;
-    youngs[i] = poisson[i] = density[i] = shear[i] = bulk[i] = coupling[i] = 0.0;
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
       link_allowed[i][j] = 1;
@@ -135,6 +132,7 @@ void PairMCA::allocate()
 
 void PairMCA::settings(int narg, char **arg)
 {
+  std::vector<std::string> chosen;
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "tolerance") == 0) {
@@ -152,16 +150,53 @@ void PairMCA::settings(int narg, char **arg)
       cutoff_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (cutoff_user <= 0.0)
         error->all(FLERR, "Pair style mca cutoff must be > 0, got {}", arg[iarg + 1]);
+    } else if (const char *slot = link_slot(arg[iarg])) {
+      // <slot> <part>: the part of the link law for that slot
+      if (iarg + 2 > narg)
+        utils::missing_cmd_args(FLERR, std::string("pair_style mca ") + slot, error);
+      std::string allowed;
+      for (const auto &p : MCA_LINK_PARTS) {
+        if (strcmp(p.slot, slot) != 0) continue;
+        if (strcmp(p.name, arg[iarg + 1]) == 0) chosen.push_back(p.name);
+        allowed += std::string(allowed.empty() ? "" : ", ") + p.name;
+      }
+      if (chosen.empty() || chosen.back() != arg[iarg + 1])
+        error->all(FLERR, "Unknown {} part {} for pair_style mca (allowed: {})", slot,
+                   arg[iarg + 1], allowed);
     } else {
-      error->all(FLERR, "Unknown pair_style mca keyword {} (allowed: tolerance, capacity, cutoff)",
-                 arg[iarg]);
+      std::string slots;
+      for (const auto &p : MCA_LINK_PARTS)
+        if (slots.find(p.slot) == std::string::npos) slots += std::string(", ") + p.slot;
+      error->all(FLERR,
+                 "Unknown pair_style mca keyword {} (allowed: tolerance, capacity, cutoff{})",
+                 arg[iarg], slots);
     }
     iarg += 2;
+  }
+  select_parts(chosen);
+}
+
+// the slot of the link law a keyword names, or nullptr
+const char *PairMCA::link_slot(const char *keyword)
+{
+  for (const auto &p : MCA_LINK_PARTS)
+    if (strcmp(p.slot, keyword) == 0) return p.slot;
+  return nullptr;
+}
+
+// the link model: the required parts and those chosen, in table order
+void PairMCA::select_parts(const std::vector<std::string> &chosen)
+{
+  model = MCALinkModel();
+  for (const auto &p : MCA_LINK_PARTS) {
+    bool on = p.required;
+    for (const auto &name : chosen) on = on || name == p.name;
+    if (on) model.add_part(p.part, p.name, p.link_size, p.atom_size);
   }
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J [E value nu value rho value] [link yes/no] [tolerance t]
+   pair_coeff I J [material keywords (MCAMaterials)] [link yes/no] [tolerance t]
    the material keywords need I and J to name the same types
 ------------------------------------------------------------------------- */
 
@@ -177,30 +212,15 @@ void PairMCA::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-  double e = -1.0, nu = -2.0, rho = -1.0, tol = -1.0;
+  MCAMaterials::Input material;
+  double tol = -1.0;
   int link = -1;
   int iarg = 2;
   while (iarg < narg) {
     if (iarg + 2 > narg)
       utils::missing_cmd_args(FLERR, std::string("pair_coeff ") + arg[iarg], error);
     const std::string key = arg[iarg];
-    if (key == "E") {
-      e = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (e <= 0.0) error->all(FLERR, "Pair mca: Young's modulus E must be > 0, got {}", e);
-    } else if (key == "nu") {
-      nu = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (nu <= -1.0 || nu >= 0.5)
-        error->all(FLERR, "Pair mca: Poisson's ratio nu must be in (-1, 0.5), got {}", nu);
-      // the mean-stress term D = 3 nu/(1 + nu) feeds each step's prediction
-      // error into the next with factor D; it must stay below 1 in size
-      if (nu <= -0.25)
-        error->all(FLERR,
-                   "Pair mca: Poisson's ratio nu = {} is not supported: the mean-stress "
-                   "predictor needs nu > -0.25 (|3 nu/(1 + nu)| < 1)",
-                   nu);
-    } else if (key == "rho") {
-      rho = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (rho <= 0.0) error->all(FLERR, "Pair mca: density rho must be > 0, got {}", rho);
+    if (materials.parse(key, arg[iarg + 1], material)) {
     } else if (key == "link") {
       link = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     } else if (key == "tolerance") {
@@ -208,32 +228,19 @@ void PairMCA::coeff(int narg, char **arg)
       if (tol < 0.0 || tol >= 0.5)
         error->all(FLERR, "Pair mca: link tolerance must be in [0, 0.5), got {}", tol);
     } else {
-      error->all(FLERR,
-                 "Unknown pair_coeff keyword {} for pair mca (allowed: E nu rho link "
-                 "tolerance)",
-                 key);
+      error->all(FLERR, "Unknown pair_coeff keyword {} for pair mca (allowed: {} link tolerance)",
+                 key, materials.keyword_list());
     }
     iarg += 2;
   }
 
-  const int nmaterial = (e > 0.0) + (nu > -2.0) + (rho > 0.0);
-  if (nmaterial > 0) {
-    if (nmaterial < 3)
-      error->all(FLERR, "Pair mca: a material needs all of E, nu and rho in one pair_coeff");
+  if (material.given) {
     if (ilo != jlo || ihi != jhi)
       error->all(FLERR,
                  "Pair mca: E, nu and rho belong to atom types; use them with two equal "
                  "type ranges (e.g. pair_coeff 1 1 or pair_coeff * *), not {} {}",
                  arg[0], arg[1]);
-    for (int i = ilo; i <= ihi; i++) {
-      youngs[i] = e;
-      poisson[i] = nu;
-      density[i] = rho;
-      shear[i] = shear_modulus(e, nu);
-      bulk[i] = bulk_modulus(e, nu);
-      coupling[i] = mean_stress_coupling(shear[i], bulk[i]);
-      material_set[i] = 1;
-    }
+    materials.assign(ilo, ihi, material);
   }
 
   int count = 0;
@@ -262,20 +269,10 @@ void PairMCA::init_style()
   if (atom->map_style == Atom::MAP_NONE)
     error->all(FLERR, "Pair style mca requires an atom map (atom_modify map array or hash)");
 
-  for (int i = 1; i <= atom->ntypes; i++)
-    if (!material_set[i])
-      error->all(FLERR,
-                 "Pair mca: no material (E, nu, rho) for atom type {}: use pair_coeff {} {} "
-                 "E value nu value rho value",
-                 i, i, i);
+  materials.check_all_set();
 
-  // the internal fix that keeps the links; its ID is fixed so that
-  // restart files find it again
-  links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
-  if (!links)
-    links = dynamic_cast<FixMCALinks *>(
-        modify->add_fix(fmt::format("{} all {}", FIX_LINKS_ID, links_fix_style())));
-  links->row_sync = this;
+  // the internal fix that keeps the links, with the blocks of the model
+  init_links();
 
   avec->sync_host();
   set_masses();
@@ -324,7 +321,7 @@ void PairMCA::set_masses()
   double *rmass = atom->rmass;
   const double *radius = atom->radius;
   for (int i = 0; i < nlocal; i++) {
-    rmass[i] = density[type[i]] * avec->volume[i];
+    rmass[i] = materials.type[type[i]].density * avec->volume[i];
     avec->inertia[i] = cell_inertia(avec->packing[i], rmass[i], radius[i]);
   }
 }
@@ -339,8 +336,8 @@ double PairMCA::recommended_timestep()
   const int nlocal = atom->nlocal;
   const int *type = atom->type;
   for (int i = 0; i < nlocal; i++) {
-    const int t = type[i];
-    const double cp = p_wave_speed(shear[t], bulk[t], density[t]);
+    const MCAMaterial &m = materials.type[type[i]];
+    const double cp = p_wave_speed(m.shear, m.bulk, m.density);
     dtmin = MIN(dtmin, atom->radius[i] / cp);
   }
   double dtall;
@@ -377,101 +374,41 @@ void PairMCA::setup()
   links->host_changed();
 }
 
-void PairMCA::create_links()
+bool PairMCA::linkable(int i, int j)
 {
-  NeighList *full = links->build_full_list();
-  const int inum = full->inum;
-  const int *ilist = full->ilist;
-  const int *numneigh = full->numneigh;
-  int **firstneigh = full->firstneigh;
-  double **x = atom->x;
-  const double *radius = atom->radius;
-  const int *type = atom->type;
-  const tagint *tag = atom->tag;
   const int *packing = avec->packing;
+  if (packing[i] == PACKING_NONE || packing[j] == PACKING_NONE) return false;
+  const int it = atom->type[i], jt = atom->type[j];
+  if (!link_allowed[it][jt]) return false;
+  const double tol = (link_tolerance[it][jt] >= 0.0) ? link_tolerance[it][jt] : tolerance_default;
+  const double *radius = atom->radius;
+  double **x = atom->x;
+  const double cut = (1.0 + tol) * (radius[i] + radius[j]);
+  const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
+  return dx * dx + dy * dy + dz * dz <= cut * cut;
+}
 
-  auto linkable = [&](int i, int j) {
-    if (packing[i] == PACKING_NONE || packing[j] == PACKING_NONE) return false;
-    const int it = type[i], jt = type[j];
-    if (!link_allowed[it][jt]) return false;
-    const double tol = (link_tolerance[it][jt] >= 0.0) ? link_tolerance[it][jt] : tolerance_default;
-    const double cut = (1.0 + tol) * (radius[i] + radius[j]);
-    const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
-    return dx * dx + dy * dy + dz * dz <= cut * cut;
-  };
-
-  // capacity: the user's, or the largest number of links of an automaton
-  int nmost = 0;
-  tagint worst = 0;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    int n = 0;
-    for (int jj = 0; jj < numneigh[i]; jj++)
-      if (linkable(i, firstneigh[i][jj] & NEIGHMASK)) n++;
-    if (n > nmost) {
-      nmost = n;
-      worst = tag[i];
-    }
-  }
-  int nmostall;
-  MPI_Allreduce(&nmost, &nmostall, 1, MPI_INT, MPI_MAX, world);
-  if (capacity_user > 0 && nmostall > capacity_user) {
-    tagint worst_local = (nmost == nmostall) ? worst : MAXTAGINT, worst_all;
-    MPI_Allreduce(&worst_local, &worst_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-    error->all(FLERR,
-               "Pair mca: automaton {} has {} neighbours to link, more than the capacity "
-               "{} (pair_style mca capacity); reduce the link tolerance or raise the capacity",
-               worst_all, nmostall, capacity_user);
-  }
-  links->set_capacity(capacity_user > 0 ? capacity_user : MAX(nmostall, 1));
-
-  bigint nlocal_links = 0;
-  int duplicate = 0;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    int &n = links->nlinks[i];
-    n = 0;
-    for (int jj = 0; jj < numneigh[i]; jj++) {
-      const int j = firstneigh[i][jj] & NEIGHMASK;
-      if (!linkable(i, j)) continue;
-      // two images of one partner: the periodic box is too small
-      for (int k = 0; k < n; k++)
-        if (links->partner[i][k] == tag[j]) duplicate = 1;
-      const bool ilo = tag[i] < tag[j];
-      const int lo = ilo ? i : j, hi = ilo ? j : i;
-      double *h = &links->history[i][n * H_SIZE];
-      for (int k = 0; k < H_SIZE; k++) h[k] = 0.0;
-      const double del[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
-      const double r = sqrt(dot3(del, del));
-      h[H_STATE] = LINK_LINKED;
-      h[H_R0] = r;
-      h[H_Q0LO] = r * radius[lo] / (radius[lo] + radius[hi]);
-      h[H_Q0HI] = r * radius[hi] / (radius[lo] + radius[hi]);
-      h[H_A0] = 0.5 *
-          (face_area(packing[lo], radius[lo], avec->volume[lo]) +
-           face_area(packing[hi], radius[hi], avec->volume[hi]));
-      h[H_RPREV] = r;
-      for (int k = 0; k < 3; k++) h[H_NPREV + k] = del[k] / r;
-      h[H_APREV] = h[H_A0];
-      links->partner[i][n] = tag[j];
-      n++;
-    }
-    nlocal_links += n;
-  }
-  int duplicate_all;
-  MPI_Allreduce(&duplicate, &duplicate_all, 1, MPI_INT, MPI_MAX, world);
-  if (duplicate_all)
-    error->all(FLERR,
-               "Pair mca: an automaton would link to two periodic images of the same "
-               "automaton; every periodic box length must exceed twice the link length "
-               "(2 (1 + tolerance) (R_i + R_j))");
-  links->created = 1;
-
-  bigint nall_links;
-  MPI_Allreduce(&nlocal_links, &nall_links, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (comm->me == 0)
-    utils::logmesg(lmp, "pair mca: {} links made, at most {} per automaton\n", nall_links / 2,
-                   nmostall);
+// a new link: stress-free at the present positions
+void PairMCA::init_link_row(int i, int j, double *h)
+{
+  const tagint *tag = atom->tag;
+  const double *radius = atom->radius;
+  const int *packing = avec->packing;
+  double **x = atom->x;
+  const bool ilo = tag[i] < tag[j];
+  const int lo = ilo ? i : j, hi = ilo ? j : i;
+  const double del[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
+  const double r = sqrt(dot3(del, del));
+  h[H_STATE] = LINK_LINKED;
+  h[H_R0] = r;
+  h[H_Q0LO] = r * radius[lo] / (radius[lo] + radius[hi]);
+  h[H_Q0HI] = r * radius[hi] / (radius[lo] + radius[hi]);
+  h[H_A0] = 0.5 *
+      (face_area(packing[lo], radius[lo], avec->volume[lo]) +
+       face_area(packing[hi], radius[hi], avec->volume[hi]));
+  h[H_RPREV] = r;
+  for (int k = 0; k < 3; k++) h[H_NPREV + k] = del[k] / r;
+  h[H_APREV] = h[H_A0];
 }
 
 /* ----------------------------------------------------------------------
@@ -484,9 +421,8 @@ void PairMCA::grow_peratom()
   nmax = atom->nmax;
   destroy_peratom();
   memory->create(pred_stiffness, nmax, "pair:pred_stiffness");
-  memory->create(fabric_atom, nmax, 6, "pair:fabric_atom");
-  memory->create(pred_strain, nmax, 6, "pair:pred_strain");
-  memory->create(bmat_atom, nmax, 9, "pair:bmat_atom");
+  memory->create(predictor_sums, nmax, PS_SIZE, "pair:predictor_sums");
+  memory->create(bmat, nmax, 9, "pair:bmat");
   memory->create(link_count, nmax, "pair:link_count");
   memory->create(dsmean, nmax, "pair:dsmean");
   memory->create(smean_pred, nmax, "pair:smean_pred");
@@ -498,26 +434,8 @@ void PairMCA::destroy_peratom()
   memory->destroy(pred_stiffness);
   memory->destroy(dsmean);
   memory->destroy(smean_pred);
-  memory->destroy(bmat_atom);
-  memory->destroy(fabric_atom);
-  memory->destroy(pred_strain);
-}
-
-/* ----------------------------------------------------------------------
-   index of automaton partner_tag as seen from i: the image closest to i;
-   a link whose partner is not a local or ghost atom cannot be computed
-------------------------------------------------------------------------- */
-
-int PairMCA::partner_index(int i, tagint partner_tag)
-{
-  const int j = atom->map(partner_tag);
-  if (j < 0)
-    error->one(FLERR,
-               "Pair mca: the link of automaton {} to automaton {} is lost: the partner is "
-               "farther than the communication cutoff {} (stretched link, or a deleted automaton); "
-               "increase it with comm_modify cutoff or pair_style mca cutoff",
-               atom->tag[i], partner_tag, cut_global + neighbor->skin);
-  return domain->closest_image(i, j);
+  memory->destroy(predictor_sums);
+  memory->destroy(bmat);
 }
 
 /* ----------------------------------------------------------------------
@@ -526,27 +444,8 @@ int PairMCA::partner_index(int i, tagint partner_tag)
 
 void PairMCA::count_links()
 {
-  const int nlocal = atom->nlocal;
-  const tagint *tag = atom->tag;
-  for (int i = 0; i < nlocal; i++) link_count[i] = 0.0;
-  // a link between local automata is counted from (and current in the row
-  // of) its lower ID
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < links->nlinks[i]; m++) {
-      const int j = partner_cache[i][m];
-      const bool jlocal = j < nlocal;
-      if (jlocal && tag[j] < tag[i]) continue;
-      if (static_cast<int>(links->history[i][m * H_SIZE + H_STATE]) != LINK_LINKED) continue;
-      link_count[i] += 1.0;
-      if (jlocal) link_count[j] += 1.0;
-    }
-  for (int i = 0; i < nlocal; i++) {
-    // stiffness of the automaton's halves in the mean-stress predictor
-    const int it = atom->type[i];
-    const int nc = avec->packing[i];
-    const int n = static_cast<int>(link_count[i]);
-    pred_stiffness[i] = (nc > 0) ? predictor_stiffness(shear[it], bulk[it], nc, n) : 0.0;
-  }
+  const HostData d = host_data();
+  for (int i = 0; i < d.nlocal; i++) count_links_of(d, i);
   comm_stage = STAGE_COUNT;
   MCACompat::forward_comm(comm, this);
 }
@@ -562,40 +461,14 @@ void PairMCA::count_links()
 
 void PairMCA::predict_mean_stress()
 {
-  double **x = atom->x;
-  const int *type = atom->type;
-  const tagint *tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  const int *packing = avec->packing;
+  const HostData d = host_data();
+  const HostSums sums{predictor_sums};
   const bool setup_pass = (update->setupflag != 0);
-
-  for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < 6; k++) fabric_atom[i][k] = pred_strain[i][k] = 0.0;
-
-  // each link once per owner, as in compute(): by the lower ID when both
-  // automata are local, whose row is current
-  for (int i = 0; i < nlocal; i++) {
-    for (int m = 0; m < links->nlinks[i]; m++) {
-      const int j = partner_cache[i][m];
-      const bool jlocal = j < nlocal;
-      if (jlocal && tag[j] < tag[i]) continue;
-      const double *h = &links->history[i][m * H_SIZE];
-      if (static_cast<int>(h[H_STATE]) != LINK_LINKED) continue;
-      const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
-      double nn[6], de_i, de_j;
-      link_prediction(h, del, tag[i] < tag[j], pred_stiffness[i], pred_stiffness[j], nn, de_i,
-                      de_j);
-      predictor_add(fabric_atom[i], pred_strain[i], nn, de_i);
-      if (jlocal) predictor_add(fabric_atom[j], pred_strain[j], nn, de_j);
-    }
-  }
-
-  for (int i = 0; i < nlocal; i++) {
-    const bool interacting = link_count[i] > 0.0 && packing[i] != PACKING_NONE;
-    mean_stress_prediction(interacting, setup_pass, links->smean_step[i], links->smean_law[i],
-                           fabric_atom[i], pred_strain[i], bulk[type[i]], smean_pred[i], dsmean[i]);
-  }
-
+  for (int i = 0; i < d.nlocal; i++)
+    for (int k = 0; k < PS_SIZE; k++) predictor_sums[i][k] = 0.0;
+  for (int i = 0; i < d.nlocal; i++) predictor_links_of(d, sums, i);
+  // (the fabric tensor stays in the first columns of the sums)
+  for (int i = 0; i < d.nlocal; i++) predictor_finish_of(d, i, predictor_sums[i], setup_pass);
   comm_stage = STAGE_MEAN;
   MCACompat::forward_comm(comm, this);
 }
@@ -608,197 +481,40 @@ void PairMCA::compute(int eflag, int vflag)
   if (!links->created) error->all(FLERR, "Pair mca: compute() before the links were made");
   grow_peratom();
 
-  // local and ghost indices change only when LAMMPS reneighbors; the
-  // partner copies were brought up to date before the atoms moved
-  if (neighbor->ago == 0 || cache_nlocal != atom->nlocal) {
-    if (partner_rows_stale)
-      error->one(FLERR, "Pair mca: atoms were reordered while link rows were out of date");
-    build_partner_cache();
-    // link states (and so the predictor stiffness, sent to the ghost
-    // atoms) change only here in the elastic model: a style that breaks
-    // links must count again when it does
-    count_links();
-  }
-
-  // the history advances only in steps of a run, not in its setup, so that
-  // a run 0 or a restarted run sees the same state
-  const bool commit = (update->setupflag == 0);
-  // a step advances a local link only in the row of its lower ID (the
-  // partner's copy follows in sync_link_rows()) unless a fix that runs
-  // before the links fix at pre-exchange could move atoms first
-  const bool lazy = links->lazy_rows && links->row_sync == this;
+  // link states (and so the predictor stiffness, sent to the ghost atoms)
+  // change only when the partners are found again in the elastic model: a
+  // part that breaks links must count again when it does
+  if (refresh_partners()) count_links();
 
   predict_mean_stress();
 
-  double **x = atom->x;
-  double **omega = atom->omega;
-  double **f = atom->f;
-  double **torque = atom->torque;
-  const int *type = atom->type;
-  const tagint *tag = atom->tag;
-  const int nlocal = atom->nlocal;
-  // spins turn the automata only in steps of a run: a setup (or run 0)
-  // sees the positions of the last step plus any displacement since, but
-  // no rotation
-  const double dt = commit ? update->dt : 0.0;
-  const double cutsq_global = cut_global * cut_global;
-  double hist[H_SIZE];
-  bigint nlong = 0;
+  // the history advances only in steps of a run, not in its setup, so that
+  // a run 0 or a restarted run sees the same state.  A step advances a
+  // local link only in the row of its lower ID (the partner's copy follows
+  // in sync_link_rows()) unless a fix that runs before the links fix at
+  // pre-exchange could move atoms first.  Spins turn the automata only in
+  // steps of a run: a setup (or run 0) sees the positions of the last step
+  // plus any displacement since, but no rotation
+  MCALinkPassFlags p;
+  p.commit = (update->setupflag == 0);
+  const bool lazy = links->lazy_rows && links->row_sync == this;
+  p.eager = !lazy;
+  p.dt = p.commit ? update->dt : 0.0;
+  p.cutsq = cut_global * cut_global;
 
-  for (int i = 0; i < nlocal; i++) {
-    for (int k = 0; k < 9; k++) bmat_atom[i][k] = 0.0;
-  }
+  const HostData d = host_data();
+  const HostLinkSums sums{atom->f, atom->torque, bmat};
+  const HostTally tally{this, evflag != 0};
+  MCAHostTotals totals;
+  for (int i = 0; i < d.nlocal; i++)
+    for (int k = 0; k < 9; k++) bmat[i][k] = 0.0;
+  for (int i = 0; i < d.nlocal; i++) link_pass_of(d, sums, tally, p, i, totals);
+  if (p.commit && lazy) partner_rows_stale = 1;
 
-  // each link is evaluated once per processor that owns one of its
-  // automata: by the lower ID when both are local (and both rows are
-  // updated), by each owner when the partner is a ghost atom
+  for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, bmat[i], p.commit);
 
-  for (int i = 0; i < nlocal; i++) {
-    for (int m = 0; m < links->nlinks[i]; m++) {
-      double *row = &links->history[i][m * H_SIZE];
-      if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
-      const int j = partner_cache[i][m];
-      const bool jlocal = j < nlocal;
-      const bool ilo = tag[i] < tag[j];
-      if (jlocal && !ilo) continue;
-      const int lo = ilo ? i : j, hi = ilo ? j : i;
-      const int tlo = type[lo], thi = type[hi];
-
-      // a step updates the row in place; a setup works on a copy
-      double *h = row;
-      if (!commit) {
-        memcpy(hist, row, H_SIZE * sizeof(double));
-        h = hist;
-      }
-      double fpair[3], tq_lo[3], tq_hi[3], trac[3], nvec[3], sig, r;
-      linked_pair(h, x[lo], x[hi], omega[lo], omega[hi], shear[tlo], shear[thi], coupling[tlo],
-                  coupling[thi], bulk[tlo], bulk[thi], dsmean[lo], dsmean[hi], smean_pred[lo],
-                  smean_pred[hi], face_moment_factor(avec->packing[lo]), dt, fpair, tq_lo, tq_hi,
-                  sig, trac, r, nvec);
-      // counted once per owner: the warning halves the sum
-      if (r * r > cutsq_global) nlong += jlocal ? 2 : 1;
-
-      // force on lo is fpair, on hi -fpair; T n^T is the same for both
-      const double sign = ilo ? 1.0 : -1.0;
-      const double *tq = ilo ? tq_lo : tq_hi;
-      for (int k = 0; k < 3; k++) {
-        f[i][k] += sign * fpair[k];
-        torque[i][k] += tq[k];
-      }
-      traction_add(bmat_atom[i], trac, nvec);
-      if (jlocal) {
-        for (int k = 0; k < 3; k++) {
-          f[j][k] -= fpair[k];
-          torque[j][k] += tq_hi[k];
-        }
-        traction_add(bmat_atom[j], trac, nvec);
-      }
-
-      // energy and virial: the whole pair, or this owner's half of it
-      if (evflag) {
-        const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-        const double share = jlocal ? 1.0 : 0.5;
-        ev_tally_xyz(i, jlocal ? j : i, nlocal, 0, share * h[H_WORK], 0.0, share * sign * fpair[0],
-                     share * sign * fpair[1], share * sign * fpair[2], delx, dely, delz);
-      }
-      if (commit && jlocal && !lazy)
-        memcpy(&links->history[j][row_cache[i][m] * H_SIZE], row, H_SIZE * sizeof(double));
-    }
-  }
-  if (commit && lazy) partner_rows_stale = 1;
-
-  for (int i = 0; i < nlocal; i++) {
-    // per-automaton outputs; the mean stress is tension positive
-    double smean;
-    automaton_stress(bmat_atom[i], fabric_atom[i], shear[type[i]], avec->stress[i], smean,
-                     avec->seq[i], avec->eeq[i]);
-    avec->smean[i] = smean;
-    if (commit) {
-      links->smean_step[i] = smean;
-      links->smean_law[i] = smean_pred[i];
-    }
-  }
-
-  nstretched = nlong;
+  nstretched = totals.nlong;
   if (neighbor->ago == 0) stretched_warning();
-}
-
-/* ----------------------------------------------------------------------
-   copy each local link's current row (lower ID) to the partner's row;
-   called by the links fix before atoms move (pre-exchange), at the end of
-   a run and before a restart file is written.  Costs one pass over the
-   links, against a copy per link and step if done in compute()
-------------------------------------------------------------------------- */
-
-void PairMCA::sync_link_rows()
-{
-  if (!partner_rows_stale) return;
-  const int nlocal = atom->nlocal;
-  const tagint *tag = atom->tag;
-  if (cache_nlocal != nlocal)
-    error->one(FLERR, "Pair mca: atoms were reordered while link rows were out of date");
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < links->nlinks[i]; m++) {
-      const int j = partner_cache[i][m];
-      if (j < nlocal && tag[j] < tag[i])
-        memcpy(&links->history[i][m * H_SIZE], &links->history[j][row_cache[i][m] * H_SIZE],
-               H_SIZE * sizeof(double));
-    }
-  partner_rows_stale = 0;
-}
-
-/* ----------------------------------------------------------------------
-   index of every link's partner (closest image) and, for a local partner,
-   the row of the same link in the partner's table
-------------------------------------------------------------------------- */
-
-void PairMCA::build_partner_cache()
-{
-  const int nlocal = atom->nlocal;
-  const tagint *tag = atom->tag;
-  if (cache_rows < atom->nmax || cache_cols < links->maxlinks) {
-    cache_rows = atom->nmax;
-    cache_cols = links->maxlinks;
-    allocate_partner_cache();
-  }
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < links->nlinks[i]; m++) {
-      const int j = partner_index(i, links->partner[i][m]);
-      partner_cache[i][m] = j;
-      row_cache[i][m] = -1;
-      if (j < nlocal)
-        for (int k = 0; k < links->nlinks[j]; k++)
-          if (links->partner[j][k] == tag[i]) row_cache[i][m] = k;
-      if (j < nlocal && row_cache[i][m] < 0)
-        error->one(FLERR, "Pair mca: automaton {} is linked to {} but not the other way", tag[i],
-                   tag[j]);
-    }
-  cache_nlocal = nlocal;
-}
-
-void PairMCA::allocate_partner_cache()
-{
-  memory->destroy(partner_cache);
-  memory->destroy(row_cache);
-  memory->create(partner_cache, cache_rows, cache_cols, "pair:partner_cache");
-  memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
-}
-
-/* ----------------------------------------------------------------------
-   a link longer than the cutoff still acts (its partner is found through
-   the atom map) but may be lost when it stretches beyond the ghost shell;
-   reported on reneighboring steps (and at setup)
-------------------------------------------------------------------------- */
-
-void PairMCA::stretched_warning()
-{
-  bigint nall;
-  MPI_Allreduce(&nstretched, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (nall > 0 && comm->me == 0)
-    error->warning(FLERR,
-                   "Pair mca: {} links are longer than the cutoff {} at step {}; a link "
-                   "whose partner leaves the ghost atoms stops the run",
-                   nall / 2, cut_global, update->ntimestep);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -834,17 +550,15 @@ void PairMCA::unpack_forward_comm(int n, int first, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   proc 0 writes to restart file
+   proc 0 writes to restart file: settings, materials by keyword name,
+   linking rules per type pair
 ------------------------------------------------------------------------- */
 
 void PairMCA::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
+  materials.write_restart(fp);
   for (int i = 1; i <= atom->ntypes; i++) {
-    fwrite(&material_set[i], sizeof(int), 1, fp);
-    fwrite(&youngs[i], sizeof(double), 1, fp);
-    fwrite(&poisson[i], sizeof(double), 1, fp);
-    fwrite(&density[i], sizeof(double), 1, fp);
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       fwrite(&link_allowed[i][j], sizeof(int), 1, fp);
@@ -854,29 +568,27 @@ void PairMCA::write_restart(FILE *fp)
 }
 
 /* ----------------------------------------------------------------------
-   proc 0 reads from restart file, bcasts
+   proc 0 reads from restart file, bcasts; files of earlier versions hold
+   E, nu and rho of each type before its linking rules
 ------------------------------------------------------------------------- */
 
 void PairMCA::read_restart(FILE *fp)
 {
   read_restart_settings(fp);
   allocate();
+  if (restart_named) materials.read_restart(fp);
   const int me = comm->me;
   for (int i = 1; i <= atom->ntypes; i++) {
-    if (me == 0) {
-      utils::sfread(FLERR, &material_set[i], sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &youngs[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &poisson[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &density[i], sizeof(double), 1, fp, nullptr, error);
-    }
-    MPI_Bcast(&material_set[i], 1, MPI_INT, 0, world);
-    MPI_Bcast(&youngs[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&poisson[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&density[i], 1, MPI_DOUBLE, 0, world);
-    if (material_set[i]) {
-      shear[i] = shear_modulus(youngs[i], poisson[i]);
-      bulk[i] = bulk_modulus(youngs[i], poisson[i]);
-      coupling[i] = mean_stress_coupling(shear[i], bulk[i]);
+    if (!restart_named) {
+      int set = 0;
+      double values[3];
+      if (me == 0) {
+        utils::sfread(FLERR, &set, sizeof(int), 1, fp, nullptr, error);
+        utils::sfread(FLERR, values, sizeof(double), 3, fp, nullptr, error);
+      }
+      MPI_Bcast(&set, 1, MPI_INT, 0, world);
+      MPI_Bcast(values, 3, MPI_DOUBLE, 0, world);
+      materials.read_restart_values(i, values, set);
     }
     for (int j = i; j <= atom->ntypes; j++) {
       if (me == 0) {
@@ -895,6 +607,7 @@ void PairMCA::read_restart(FILE *fp)
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
+  fwrite(&RESTART_NAMED_MATERIALS, sizeof(double), 1, fp);
   fwrite(&tolerance_default, sizeof(double), 1, fp);
   fwrite(&cutoff_user, sizeof(double), 1, fp);
   fwrite(&capacity_user, sizeof(int), 1, fp);
@@ -904,8 +617,16 @@ void PairMCA::write_restart_settings(FILE *fp)
 
 void PairMCA::read_restart_settings(FILE *fp)
 {
+  double first = 0.0;
+  if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
+  restart_named = (first == RESTART_NAMED_MATERIALS);
+  if (!restart_named && first < 0.0)
+    error->all(FLERR, "Restart file holds pair mca settings of an unknown layout ({})", first);
+  tolerance_default = first;
   if (comm->me == 0) {
-    utils::sfread(FLERR, &tolerance_default, sizeof(double), 1, fp, nullptr, error);
+    if (restart_named)
+      utils::sfread(FLERR, &tolerance_default, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &cutoff_user, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &capacity_user, sizeof(int), 1, fp, nullptr, error);
   }
@@ -919,17 +640,14 @@ void PairMCA::read_restart_settings(FILE *fp)
 void *PairMCA::extract(const char *str, int &dim)
 {
   dim = 1;
-  if (strcmp(str, "E") == 0) return (void *) youngs;
-  if (strcmp(str, "nu") == 0) return (void *) poisson;
-  if (strcmp(str, "rho") == 0) return (void *) density;
-  return nullptr;
+  return (void *) materials.column(str);
 }
 
 /* ---------------------------------------------------------------------- */
 
 double PairMCA::memory_usage()
 {
-  // link_count, pred_stiffness, dsmean, smean_pred, bmat, fabric, pred_strain
-  return (4.0 + 9.0 + 6.0 + 6.0) * nmax * sizeof(double) +
+  // link_count, pred_stiffness, dsmean, smean_pred, predictor sums, B
+  return (4.0 + PS_SIZE + 9.0) * nmax * sizeof(double) +
       2.0 * cache_rows * cache_cols * sizeof(int);
 }

@@ -20,12 +20,12 @@ PairStyle(mca,PairMCA);
 #ifndef LMP_PAIR_MCA_H
 #define LMP_PAIR_MCA_H
 
-#include "fix_mca_links.h"
-#include "pair.h"
+#include "mca_materials.h"
+#include "pair_mca_linked.h"
 
 namespace LAMMPS_NS {
 
-class PairMCA : public Pair, public MCALinkRowSync {
+class PairMCA : public PairMCALinked {
  public:
   PairMCA(class LAMMPS *);
   ~PairMCA() override;
@@ -52,60 +52,48 @@ class PairMCA : public Pair, public MCALinkRowSync {
   virtual void predict_mean_stress();
 
   double recommended_timestep();
-  class FixMCALinks *links;
-
-  // a link between two local automata is advanced in the row of the
-  // lower ID only; the partner's row is brought up to date on request
-  void sync_link_rows() override;
 
  protected:
-  // per type: material
-  double *youngs, *poisson, *density;    // E, nu, rho
-  double *shear, *bulk, *coupling;       // G, K, D = 1 - 2G/(3K)
-  int *material_set;
+  MCAMaterials materials;    // per type
   // per type pair: linking rules
   int **link_allowed;
   double **link_tolerance;
 
   double tolerance_default;    // relative distance tolerance for links
   double cutoff_user;          // pair cutoff given by the user, else < 0
-  int capacity_user;           // links per automaton given by the user, else 0
-  double cut_global;
 
   // per-atom work arrays (local + ghost)
   int nmax;
-  double *link_count;        // interacting links of each local automaton
-  double *pred_stiffness;    // its stiffness in the mean-stress predictor (communicated)
-  double *dsmean;            // mean-stress increment the normal law applies this step
-  double *smean_pred;        // predicted mean stress of this step
-  double **bmat_atom;        // sum of T n^T of each local automaton
-  double **fabric_atom;      // sum of n n^T of each local automaton at the current
-                             // positions: made by the predictor, used by the stress too
-  double **pred_strain;      // sum of de n n^T of the predicted strains
-  int **partner_cache;       // local or ghost index of each link's partner
-  int **row_cache;           // row of the same link in a local partner's table
-  int cache_rows, cache_cols, cache_nlocal;
+  int *link_count;            // interacting links of each local automaton
+  double *pred_stiffness;     // its stiffness in the mean-stress predictor (communicated)
+  double *dsmean;             // mean-stress increment the normal law applies this step
+  double *smean_pred;         // predicted mean stress of this step
+  double **predictor_sums;    // predictor pass: PS_* columns (mca_link_passes.h); the
+                              // first six, sum n n^T, are the fabric tensor of the stress
+  double **bmat;              // link pass: sum of T n^T (LS_BMAT columns)
   void destroy_peratom();
-  int partner_rows_stale;    // rows of local links behind their partner's copy
   // what the forward communication sends: the predictor stiffness, or the
   // mean-stress increment and prediction
   enum CommStage { STAGE_COUNT, STAGE_MEAN };
   int comm_stage;
-  bigint nstretched;    // links longer than the cutoff at the last step
+  int restart_named;    // the restart file being read names its material keywords
 
   class MCAAtomFields *avec;
 
   void allocate();
   void grow_peratom();
-  void create_links();
+  bool linkable(int i, int j) override;
+  void init_link_row(int i, int j, double *row) override;
   void count_links();
-  void build_partner_cache();
-  virtual void allocate_partner_cache();
-  // style of the internal fix that keeps the links
-  virtual const char *links_fix_style() const { return "MCA_LINKS"; }
   void set_masses();
-  int partner_index(int i, tagint partner_tag);
-  void stretched_warning();
+  static const char *link_slot(const char *keyword);
+  void select_parts(const std::vector<std::string> &chosen);
+
+  struct HostData;
+  struct HostSums;
+  struct HostLinkSums;
+  struct HostTally;
+  HostData host_data();
 };
 
 }    // namespace LAMMPS_NS

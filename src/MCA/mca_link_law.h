@@ -1,0 +1,323 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Elastic MCA law of a linked pair.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_MCA_LINK_LAW_H
+#define LMP_MCA_LINK_LAW_H
+
+#include "mca_geometry.h"
+#include "mca_link_layout.h"
+#include "mca_material.h"
+
+#include <cmath>
+
+namespace LAMMPS_NS {
+namespace MCAKernels {
+
+  /* ----------------------------------------------------------------------
+     normal strain increments of the two halves such that their tractions
+     stay equal (Newton 3), for unequal materials and sizes:
+       sig_i + 2G_i de_i + D_i dsm_i = sig_j + 2G_j de_j + D_j dsm_j
+       q0_i de_i + q0_j de_j = dr
+     (the source's eq. 3.68 has 2G_i where 2G_j belongs)
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void split_normal_strain(double sig_i, double sig_j, double g_i, double g_j,
+                                      double d_i, double d_j, double dsm_i, double dsm_j,
+                                      double q0_i, double q0_j, double dr, double &de_i,
+                                      double &de_j)
+  {
+    de_i = (q0_j * (sig_j - sig_i + d_j * dsm_j - d_i * dsm_i) + 2.0 * g_j * dr) /
+        (2.0 * g_i * q0_j + 2.0 * g_j * q0_i);
+    de_j = (dr - q0_i * de_i) / q0_j;
+  }
+
+  /* ----------------------------------------------------------------------
+     tangential displacement of the contact point of j relative to that of
+     i during a step: the change of the centre-to-centre vector (from the
+     positions, so that displacements made between runs count too) minus
+     the part carried by the spins, normal to the current normal n.
+     The spins turn the contact points about the mid-step normal
+     (n_old + n)/|n_old + n|: for a rigid rotation by an angle alpha per
+     step the change of the centre-to-centre vector is exactly
+     2 sin(alpha/2) w x r_mid, so the slip left is O(alpha^3) per step and
+     does not accumulate (with the end-of-step normal it would be
+     O(alpha^2) and grow steadily along an arc).  Thesis 3.107-3.109
+     without the 1/r, there written with velocities.
+       del, del_old   centre-to-centre vector now and at the last step
+       n_old          unit normal at the last step
+       w_i, w_j       angular velocities over the step (spin increments w dt)
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void contact_slip(const double *n, const double *n_old, const double *del,
+                               const double *del_old, double q_i, double q_j, const double *w_i,
+                               const double *w_j, double dt, double *dl)
+  {
+    double nm[3] = {n[0] + n_old[0], n[1] + n_old[1], n[2] + n_old[2]};
+    const double len = sqrt(dot3(nm, nm));
+    for (int m = 0; m < 3; m++) nm[m] = (len > 0.0) ? nm[m] / len : n[m];
+    const double s[3] = {dt * (q_i * w_i[0] + q_j * w_j[0]), dt * (q_i * w_i[1] + q_j * w_j[1]),
+                         dt * (q_i * w_i[2] + q_j * w_j[2])};
+    double sxn[3];
+    cross3(s, nm, sxn);
+    const double u[3] = {del[0] - del_old[0] - sxn[0], del[1] - del_old[1] - sxn[1],
+                         del[2] - del_old[2] - sxn[2]};
+    const double un = dot3(u, n);
+    for (int m = 0; m < 3; m++) dl[m] = u[m] - un * n[m];
+  }
+
+  /* ----------------------------------------------------------------------
+     shear strain increments of the two halves with equal resulting shear
+     tractions (thesis 3.104-3.106, solved exactly for unequal G and q):
+       t_i + 2G_i dg_i = t_j + 2G_j dg_j,   q_i dg_i + q_j dg_j = dl
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE void split_shear_strain(const double *t_i, const double *t_j, double g_i, double g_j,
+                                     double q_i, double q_j, const double *dl, double *dg_i,
+                                     double *dg_j)
+  {
+    const double inv = 1.0 / (g_i * q_j + g_j * q_i);
+    for (int k = 0; k < 3; k++) {
+      dg_i[k] = (g_j * dl[k] + 0.5 * q_j * (t_j[k] - t_i[k])) * inv;
+      dg_j[k] = (dl[k] - q_i * dg_i[k]) / q_j;
+    }
+  }
+
+  // contact area from the mean stresses (thesis 3.65): A r = A0 r0 (1 + mean volumetric strain)
+  MCA_INLINE double contact_area(double a0, double r0, double r, double sm_i, double k_i,
+                                 double sm_j, double k_j)
+  {
+    return a0 * (r0 / r) * (1.0 + 0.5 * (sm_i / k_i + sm_j / k_j));
+  }
+
+  /* ----------------------------------------------------------------------
+     the parts a link model is made of, one per slot of the law: the
+     elastic part always; the part of an optional slot is selected by
+     "pair_style mca <slot> <part>".  Each declares the blocks it keeps
+     (doubles per link row and per automaton).  A new part is a line here,
+     its kernel in the link step below and its doc (Developer_mca.rst)
+  ------------------------------------------------------------------------- */
+
+  enum LinkPart { PART_ELASTIC = 0, NPARTS };
+  static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");
+
+  struct MCALinkPartInfo {
+    const char *slot;    // elastic, (plasticity, fracture, damping, ...)
+    const char *name;    // the part's keyword, and its name in restart files
+    int part;            // LinkPart id
+    int link_size, atom_size;
+    bool required;    // in every model
+  };
+
+  constexpr MCALinkPartInfo MCA_LINK_PARTS[] = {
+      {"elastic", "elastic", PART_ELASTIC, H_SIZE, A_SIZE, true},
+  };
+  constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
+
+  /* ----------------------------------------------------------------------
+     one step of a linked pair, all in canonical order (lo, hi):
+       link_motion        length, normal, relative rotation
+       normal_traction    elastic trial of the normal tractions (Newton-3 split)
+       shear_traction     carry shear tractions and couples with the pair,
+                          elastic trial of the shear tractions
+       link_forces        contact area, force, bending and torsion, torques
+       link_work          elastic work of the step; the row is committed
+     The inelastic parts of the link model (plastic return on the trial
+     tractions, break check) act between the trial and link_forces; see
+     doc/src/Developer_mca.rst.
+  ------------------------------------------------------------------------- */
+
+  // what the law reads of the two automata of a link
+  struct MCALinkEnds {
+    const double *x_lo, *x_hi;    // positions (x_hi: the image of hi closest to lo)
+    const double *w_lo, *w_hi;    // angular velocities
+    double dsm_lo, dsm_hi;        // mean-stress increments to apply this step
+    double sm_lo, sm_hi;          // predicted mean stresses (for the contact area)
+    double chi;                   // face second moment / area^2
+    double dt;                    // time step (0 in a setup: no spin)
+    // where the blocks of the parts lie in the row: the elastic block is
+    // at 0 (H_*); a part that follows finds its own at link_offset[part]
+    const MCALinkLayout *layout;
+  };
+
+  // what a step gives the automata
+  struct MCALinkForces {
+    double f[3];                  // force on lo (on hi: -f)
+    double tq_lo[3], tq_hi[3];    // torques on lo and hi
+    double sig;                   // normal traction (for the mean stress)
+    double t[3];                  // shear traction
+    double trac[3];               // traction on lo, sig n + t; T n^T is the same for both
+    double couple[3];             // bending and torsion couple
+    double area;                  // contact area
+    double r, n[3];               // current length and normal
+  };
+
+  // kinematics of the step and what the tractions acted with at the last step
+  struct MCALinkMotion {
+    double del[3];                         // x_hi - x_lo
+    double dr;                             // length change since the last step
+    double q_lo, q_hi;                     // current half lengths (after the normal update)
+    double dl[3];                          // tangential slip of the contact points
+    double dth[3];                         // relative rotation of hi against lo
+    double sig_old, t_old[3], c_old[3];    // tractions and couple of the last step
+  };
+
+  MCA_INLINE void link_motion(const double *hist, const MCALinkEnds &e, MCALinkForces &out,
+                              MCALinkMotion &mo)
+  {
+    for (int m = 0; m < 3; m++) mo.del[m] = e.x_hi[m] - e.x_lo[m];
+    out.r = sqrt(dot3(mo.del, mo.del));
+    const double rinv = 1.0 / out.r;
+    for (int m = 0; m < 3; m++) out.n[m] = mo.del[m] * rinv;
+    mo.dr = out.r - hist[H_RPREV];
+    for (int m = 0; m < 3; m++) mo.dth[m] = e.dt * (e.w_hi[m] - e.w_lo[m]);
+    const double *lo = hist + H_LO, *hi = hist + H_HI;
+    mo.sig_old = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
+    for (int m = 0; m < 3; m++) {
+      mo.t_old[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
+      mo.c_old[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
+    }
+  }
+
+  MCA_INLINE void normal_traction(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                                  const MCAMaterial &m_hi, MCALinkMotion &mo)
+  {
+    double *lo = hist + H_LO;
+    double *hi = hist + H_HI;
+    const double q0_lo = hist[H_Q0LO], q0_hi = hist[H_Q0HI];
+    double de_lo, de_hi;
+    const double sig_lo0 = lo[HALF_SIG], sig_hi0 = hi[HALF_SIG];
+    split_normal_strain(sig_lo0, sig_hi0, m_lo.shear, m_hi.shear, m_lo.coupling, m_hi.coupling,
+                        e.dsm_lo, e.dsm_hi, q0_lo, q0_hi, mo.dr, de_lo, de_hi);
+    lo[HALF_EPS] += de_lo;
+    hi[HALF_EPS] += de_hi;
+    lo[HALF_SIG] = sig_lo0 + 2.0 * m_lo.shear * de_lo + m_lo.coupling * e.dsm_lo;
+    hi[HALF_SIG] = sig_hi0 + 2.0 * m_hi.shear * de_hi + m_hi.coupling * e.dsm_hi;
+    mo.q_lo = q0_lo * (1.0 + lo[HALF_EPS]);
+    mo.q_hi = q0_hi * (1.0 + hi[HALF_EPS]);
+  }
+
+  MCA_INLINE void shear_traction(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                                 const MCAMaterial &m_hi, const double *n, MCALinkMotion &mo)
+  {
+    double *lo = hist + H_LO;
+    double *hi = hist + H_HI;
+
+    // carry shear tractions and couples along with the pair
+    const double phi = 0.5 * e.dt * (dot3(e.w_lo, n) + dot3(e.w_hi, n));
+    const double *n_old = hist + H_NPREV;
+    double rot[9];
+    double cos_phi, sin_phi;
+    cos_sin(phi, cos_phi, sin_phi);
+    pair_rotation(n_old, n, cos_phi, sin_phi, rot);
+    rotate_with_pair(lo + HALF_T, rot, n, true);
+    rotate_with_pair(hi + HALF_T, rot, n, true);
+    rotate_with_pair(lo + HALF_COUPLE, rot, n, false);
+    rotate_with_pair(hi + HALF_COUPLE, rot, n, false);
+
+    // shear tractions
+    double dg_lo[3], dg_hi[3];
+    const double rprev = hist[H_RPREV];
+    const double del_old[3] = {rprev * n_old[0], rprev * n_old[1], rprev * n_old[2]};
+    contact_slip(n, n_old, mo.del, del_old, mo.q_lo, mo.q_hi, e.w_lo, e.w_hi, e.dt, mo.dl);
+    split_shear_strain(lo + HALF_T, hi + HALF_T, m_lo.shear, m_hi.shear, mo.q_lo, mo.q_hi, mo.dl,
+                       dg_lo, dg_hi);
+    for (int m = 0; m < 3; m++) {
+      lo[HALF_T + m] += 2.0 * m_lo.shear * dg_lo[m];
+      hi[HALF_T + m] += 2.0 * m_hi.shear * dg_hi[m];
+    }
+  }
+
+  MCA_INLINE void link_forces(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                              const MCAMaterial &m_hi, const MCALinkMotion &mo, MCALinkForces &out)
+  {
+    double *lo = hist + H_LO;
+    double *hi = hist + H_HI;
+    const double *n = out.n;
+
+    // contact area and pair force on lo
+    out.area = contact_area(hist[H_A0], hist[H_R0], out.r, e.sm_lo, m_lo.bulk, e.sm_hi, m_hi.bulk);
+    out.sig = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
+    for (int m = 0; m < 3; m++) {
+      out.t[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
+      out.f[m] = out.area * (out.sig * n[m] + out.t[m]);
+    }
+
+    // bending and torsion: the faces act as two elastic layers of
+    // thickness q_lo, q_hi in series; the relative rotation splits into
+    // twist (along n) and bending (normal to n)
+    const double compliance = mo.q_lo / (2.0 * m_lo.shear) + mo.q_hi / (2.0 * m_hi.shear);
+    const double kbend = e.chi * out.area * out.area / compliance;
+    const double twist = dot3(mo.dth, n);
+    double dcouple[3];
+    for (int m = 0; m < 3; m++)
+      dcouple[m] = kbend * (mo.dth[m] - twist * n[m]) + 2.0 * kbend * twist * n[m];
+    for (int m = 0; m < 3; m++) {
+      lo[HALF_COUPLE + m] += dcouple[m];
+      hi[HALF_COUPLE + m] += dcouple[m];
+    }
+    for (int m = 0; m < 3; m++) out.couple[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
+
+    // torques: moment of the shear force about each centre, plus the couple
+    double nxf[3];
+    cross3(n, out.f, nxf);
+    for (int m = 0; m < 3; m++) {
+      out.tq_lo[m] = mo.q_lo * nxf[m] + out.couple[m];
+      out.tq_hi[m] = mo.q_hi * nxf[m] - out.couple[m];
+    }
+
+    for (int m = 0; m < 3; m++) out.trac[m] = out.sig * n[m] + out.t[m];
+  }
+
+  // elastic energy: work of the pair forces over the step, trapezoidal
+  // rule with the forces that acted at the last step and now; the row
+  // then holds this step's length, normal and area
+  MCA_INLINE void link_work(double *hist, const MCALinkMotion &mo, const MCALinkForces &out)
+  {
+    const double a_old = hist[H_APREV];
+    double work = 0.5 * (a_old * mo.sig_old + out.area * out.sig) * mo.dr;
+    for (int m = 0; m < 3; m++)
+      work += 0.5 * (a_old * mo.t_old[m] + out.area * out.t[m]) * mo.dl[m] +
+          0.5 * (mo.c_old[m] + out.couple[m]) * mo.dth[m];
+    hist[H_WORK] += work;
+
+    hist[H_RPREV] = out.r;
+    for (int m = 0; m < 3; m++) hist[H_NPREV + m] = out.n[m];
+    hist[H_APREV] = out.area;
+  }
+
+  // one step of a linked pair: hist is updated (the caller keeps or
+  // discards it), out holds what acts on the automata
+  MCA_FORCE_INLINE void linked_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
+                                    const MCAMaterial &mat_hi, MCALinkForces &out)
+  {
+    // local copies of the materials: the stores into the row cannot change
+    // them, so they stay in registers where the call is not inlined.  (Not
+    // of e: the caller has just written it, and a wide copy of fresh
+    // stores stalls)
+    const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
+    MCALinkMotion mo;
+    link_motion(hist, e, out, mo);
+    normal_traction(hist, e, m_lo, m_hi, mo);
+    shear_traction(hist, e, m_lo, m_hi, out.n, mo);
+    link_forces(hist, e, m_lo, m_hi, mo, out);
+    link_work(hist, mo, out);
+  }
+
+}    // namespace MCAKernels
+}    // namespace LAMMPS_NS
+
+#endif

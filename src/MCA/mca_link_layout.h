@@ -1,0 +1,101 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Layout of a link's history row and of an automaton's law state.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_MCA_LINK_LAYOUT_H
+#define LMP_MCA_LINK_LAYOUT_H
+
+#include "mca_inline.h"
+
+#include <cmath>
+
+namespace LAMMPS_NS {
+namespace MCAKernels {
+
+  /* ----------------------------------------------------------------------
+     A link's history row is made of the blocks of the parts of the link
+     model (mca_link_model.h), each declared by its part: the elastic part
+     always, first, at offset 0; the blocks of optional parts (plasticity,
+     fracture, damping, ...) follow in the order they are selected, at
+     offsets the model computes at run time (MCALinkLayout).  The same holds
+     for the per-automaton state of the law.  Both owners of a link store
+     the whole row, in canonical order.
+
+     Conventions of the elastic block (see doc/src/pair_mca.rst):
+     - a pair is stored and computed in canonical order: "lo" is the
+       automaton with the lower atom ID, "hi" the other; n points lo -> hi
+     - tractions are tension positive; sigma is the normal traction and t
+       the shear traction vector acting on lo (on hi they act with opposite
+       sign), both per unit contact area
+     - each automaton keeps its half of the pair state (strain, tractions,
+       couple); the Newton-3 splits below make the two halves equal
+     - q0 = reference distance from an automaton's centre to the contact
+       plane (q0_lo + q0_hi = reference length r0), q = q0 (1 + eps)
+  ------------------------------------------------------------------------- */
+
+  // the elastic block of a row (doubles).  What the mean-stress predictor
+  // reads comes first (up to the normal tractions of both halves), so that
+  // its pass touches few cache lines.  H_LAYOUT numbered this order in the
+  // restart files of versions that knew no other block (1000 H_LAYOUT +
+  // H_SIZE); blocks are now recorded by name (FixMCALinks)
+  enum { H_LAYOUT = 1 };
+  enum LinkHistory {
+    H_STATE = 0,    // link state (LINKED)
+    H_RPREV,        // length at the last step
+    H_Q0LO,         // reference half lengths
+    H_Q0HI,
+    H_LO,                     // half of lo: sigma, eps, t(3), couple(3)
+    H_HI = H_LO + 8,          // half of hi
+    H_R0 = H_HI + 8,          // reference length r0
+    H_A0,                     // reference contact area
+    H_NPREV,                  // unit normal lo -> hi at the last step (3)
+    H_APREV = H_NPREV + 3,    // contact area at the last step
+    H_WORK,                   // elastic energy of the link
+    H_SIZE                    // size of the elastic block
+  };
+  // offsets inside a half (ints: C++20 deprecates adding them to the
+  // LinkHistory enumerators if they were another enumeration)
+  constexpr int HALF_SIG = 0, HALF_EPS = 1, HALF_T = 2, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8;
+  enum LinkState { LINK_NONE = 0, LINK_LINKED = 1 };
+
+  // the elastic block of an automaton's law state
+  constexpr int A_SMEAN_STEP = 0;    // mean stress from the tractions at the last step
+  constexpr int A_SMEAN_LAW = 1;     // mean stress the normal law used at the last step
+  constexpr int A_SIZE = 2;
+
+  // the longest row a pass copies on the stack (a setup works on a copy)
+  constexpr int MAX_ROW_SIZE = 128;
+
+  // most parts a link model can be made of (their ids: LinkPart in
+  // mca_link_law.h)
+  constexpr int MAX_PARTS = 8;
+
+  /* where the blocks of a model lie, as the kernels read it: plain ints,
+     copied into every kernel; a part that is not in the model has the
+     offset -1.  The elastic block is always at 0, so its slots (H_*, A_*)
+     are compile-time offsets.                                            */
+
+  struct MCALinkLayout {
+    int row_size;                  // doubles per link row
+    int atom_size;                 // doubles of law state per automaton
+    int link_offset[MAX_PARTS];    // where each part's block starts in a row
+    int atom_offset[MAX_PARTS];    // and in an automaton's state
+  };
+
+}    // namespace MCAKernels
+}    // namespace LAMMPS_NS
+
+#endif

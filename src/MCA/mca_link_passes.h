@@ -1,0 +1,266 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   The passes of pair_style mca over the links of one automaton, written
+   once for the CPU style (a loop over the local automata) and the Kokkos
+   style (one kernel call per automaton or per chunk of automata).
+
+   A pass is a template over
+     D      the data: per-automaton fields and the link table, read as
+            d.x(i, k), d.x_row(i, scratch) (the 3 coordinates in a row:
+            the array's own, or copied into scratch), d.tag(i),
+            d.nlinks(i), d.partner(i, m) (local or
+            ghost index), d.row(i, m) (row of the same link in a local
+            partner's table), d.history_row(i, m), d.atom_state(i, k),
+            d.material(type), ... (PairMCA::HostData, MCAPairViews)
+     Sums   where a link adds to its two automata: begin(i) gives the
+            adder of automaton i; own(add, i, k, v) adds v to column k of
+            i, partner_of(add, j) the target of a local partner,
+            partner(add, to, k, v) adds there (pair_mca_host.h,
+            pair_mca_kokkos_kernels.h); one value at a time, the product
+            computed in the call, which keeps the link pass free of
+            temporary arrays
+     Tally  energy and virial of a link (Pair::ev_tally_xyz on the CPU, a
+            reduction in Kokkos), where wanted()
+
+   Each link is evaluated once per processor that owns one of its
+   automata: by the lower ID when both are local (whose row is current
+   and advances), by each owner when the partner is a ghost atom.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_MCA_LINK_PASSES_H
+#define LMP_MCA_LINK_PASSES_H
+
+#include "mca_link_law.h"
+#include "mca_mean_stress.h"
+
+namespace LAMMPS_NS {
+namespace MCAKernels {
+
+  // per-automaton sums of the two link passes (columns): the predictor's
+  // fabric tensor F and strain moment M, and the link pass's force,
+  // torque and traction moment B
+  constexpr int PS_FABRIC = 0, PS_STRAIN = 6, PS_SIZE = 12;
+  constexpr int LS_FORCE = 0, LS_TORQUE = 3, LS_BMAT = 6, LS_SIZE = 15;
+
+  // the ownership rule: a link between two local automata is evaluated
+  // by, and advances in the row of, the lower ID.  Is that the partner j
+  // of automaton i?
+  template <class D> MCA_FUNCTION bool partner_evaluates(const D &d, int i, int j)
+  {
+    return j < d.nlocal && d.tag(j) < d.tag(i);
+  }
+
+  // the history row of link m of automaton i that is current
+  template <class D> MCA_FUNCTION const double *current_row(const D &d, int i, int m)
+  {
+    const int j = d.partner(i, m);
+    if (partner_evaluates(d, i, j)) return d.history_row(j, d.row(i, m));
+    return d.history_row(i, m);
+  }
+
+  MCA_INLINE bool linked(const double *row)
+  {
+    return static_cast<int>(row[H_STATE]) == LINK_LINKED;
+  }
+
+  /* ----------------------------------------------------------------------
+     count: interacting links of automaton i and its stiffness in the
+     mean-stress predictor (sent to the ghost atoms)
+  ------------------------------------------------------------------------- */
+
+  template <class D> MCA_FUNCTION void count_links_of(const D &d, int i)
+  {
+    int n = 0;
+    for (int m = 0; m < d.nlinks(i); m++)
+      if (linked(current_row(d, i, m))) n++;
+    d.link_count(i) = n;
+    const MCAMaterial &mat = d.material(d.type(i));
+    const int nc = d.packing(i);
+    d.pred_stiffness(i) = (nc > 0) ? predictor_stiffness(mat.shear, mat.bulk, nc, n) : 0.0;
+  }
+
+  /* ----------------------------------------------------------------------
+     predictor: fabric tensor and predicted strain moment of the links
+     that automaton i evaluates, added to i and a local partner
+  ------------------------------------------------------------------------- */
+
+  template <class D, class Sums>
+  MCA_FUNCTION void predictor_links_of(const D &d, const Sums &sums, int i)
+  {
+    auto add = sums.begin(i);
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const int j = d.partner(i, m);
+      if (partner_evaluates(d, i, j)) continue;
+      const double *h = d.history_row(i, m);
+      if (!linked(h)) continue;
+      const double del[3] = {d.x(j, 0) - d.x(i, 0), d.x(j, 1) - d.x(i, 1), d.x(j, 2) - d.x(i, 2)};
+      double nn[6], de_i, de_j;
+      link_prediction(h, del, d.tag(i) < d.tag(j), d.pred_stiffness(i), d.pred_stiffness(j), nn,
+                      de_i, de_j);
+      for (int k = 0; k < 6; k++) {
+        sums.own(add, i, PS_FABRIC + k, nn[k]);
+        sums.own(add, i, PS_STRAIN + k, de_i * nn[k]);
+      }
+      if (j < d.nlocal) {
+        const auto to = sums.partner_of(add, j);
+        for (int k = 0; k < 6; k++) {
+          sums.partner(add, to, PS_FABRIC + k, nn[k]);
+          sums.partner(add, to, PS_STRAIN + k, de_j * nn[k]);
+        }
+      }
+    }
+  }
+
+  // the mean stress automaton i's normal law applies this step, from its
+  // predictor sums; its fabric tensor is kept for the stress
+  template <class D>
+  MCA_FUNCTION void predictor_finish_of(const D &d, int i, const double *sums, bool setup_pass)
+  {
+    const double *fab = sums + PS_FABRIC, *mstrain = sums + PS_STRAIN;
+    for (int k = 0; k < 6; k++) d.fabric(i, k) = fab[k];
+    const bool interacting = d.link_count(i) > 0 && d.packing(i) != PACKING_NONE;
+    double smean_pred, dsmean;
+    mean_stress_prediction(interacting, setup_pass, d.atom_state(i, A_SMEAN_STEP),
+                           d.atom_state(i, A_SMEAN_LAW), fab, mstrain, d.material(d.type(i)).bulk,
+                           smean_pred, dsmean);
+    d.smean_pred(i) = smean_pred;
+    d.dsmean(i) = dsmean;
+  }
+
+  /* ----------------------------------------------------------------------
+     link pass: the links automaton i evaluates; force, torque and
+     traction moment added to i and a local partner
+  ------------------------------------------------------------------------- */
+
+  struct MCALinkPassFlags {
+    bool commit;     // a step of a run: the rows advance (a setup works on copies)
+    bool eager;      // bring a local partner's copy of the row up to date now
+    double dt;       // time step, 0 in a setup (spins turn automata only in steps)
+    double cutsq;    // square of the pair cutoff (links longer are counted)
+  };
+
+  template <class D, class Sums, class Tally, class Totals>
+  MCA_FUNCTION void link_pass_of(const D &d, const Sums &sums, const Tally &tally,
+                                 const MCALinkPassFlags &p, int i, Totals &totals)
+  {
+    auto add = sums.begin(i);
+    for (int m = 0; m < d.nlinks(i); m++) {
+      // (the row's state is read first: where rows come from memory, its
+      // load then overlaps the others)
+      double *row = d.history_row(i, m);
+      if (!linked(row)) continue;
+      const int j = d.partner(i, m);
+      if (partner_evaluates(d, i, j)) continue;
+      const bool jlocal = j < d.nlocal;
+      const bool ilo = d.tag(i) < d.tag(j);
+      const int lo = ilo ? i : j, hi = ilo ? j : i;
+
+      // a step updates the row in place; a setup works on a copy
+      double copy[MAX_ROW_SIZE];
+      double *h = row;
+      if (!p.commit) {
+        for (int k = 0; k < d.layout.row_size; k++) copy[k] = row[k];
+        h = copy;
+      }
+      MCALinkEnds e;
+      double scratch[12];
+      e.x_lo = d.x_row(lo, scratch);
+      e.x_hi = d.x_row(hi, scratch + 3);
+      e.w_lo = d.omega_row(lo, scratch + 6);
+      e.w_hi = d.omega_row(hi, scratch + 9);
+      e.dsm_lo = d.dsmean(lo);
+      e.dsm_hi = d.dsmean(hi);
+      e.sm_lo = d.smean_pred(lo);
+      e.sm_hi = d.smean_pred(hi);
+      e.chi = face_moment_factor(d.packing(lo));
+      e.dt = p.dt;
+      e.layout = &d.layout;
+      MCALinkForces out;
+      linked_pair(h, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
+      // counted once per owner: the warning halves the sum
+      if (out.r * out.r > p.cutsq) totals.nlong += jlocal ? 2 : 1;
+
+      // force on lo is f, on hi -f; T n^T is the same for both
+      const double sign = ilo ? 1.0 : -1.0;
+      const double *tq = ilo ? out.tq_lo : out.tq_hi;
+      for (int k = 0; k < 3; k++) {
+        sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
+        sums.own(add, i, LS_TORQUE + k, tq[k]);
+      }
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) sums.own(add, i, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+      if (jlocal) {
+        const auto to = sums.partner_of(add, j);
+        for (int k = 0; k < 3; k++) {
+          sums.partner(add, to, LS_FORCE + k, -out.f[k]);
+          sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
+        }
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++)
+            sums.partner(add, to, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+        if (p.commit && p.eager) {
+          double *partner_row = d.history_row(j, d.row(i, m));
+          for (int k = 0; k < d.layout.row_size; k++) partner_row[k] = row[k];
+        }
+      }
+
+      // energy and virial: the whole pair, or this owner's half of it
+      if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, h[H_WORK], out.f);
+    }
+  }
+
+  // forces and torques of automaton i from its link sums
+  template <class D> MCA_FUNCTION void add_link_forces(const D &d, int i, const double *sums)
+  {
+    for (int k = 0; k < 3; k++) {
+      d.f(i, k) += sums[LS_FORCE + k];
+      d.torque(i, k) += sums[LS_TORQUE + k];
+    }
+  }
+
+  // stress and law state of automaton i from its traction moment B
+  template <class D>
+  MCA_FUNCTION void automaton_outputs_of(const D &d, int i, const double *bmat, bool commit)
+  {
+    // per-automaton outputs; the mean stress is tension positive
+    double fab[6], stress[6], smean, seq, eeq;
+    for (int k = 0; k < 6; k++) fab[k] = d.fabric(i, k);
+    automaton_stress(bmat, fab, d.material(d.type(i)).shear, stress, smean, seq, eeq);
+    for (int k = 0; k < 6; k++) d.stress(i, k) = stress[k];
+    d.smean(i) = smean;
+    d.seq(i) = seq;
+    d.eeq(i) = eeq;
+    if (commit) {
+      d.atom_state(i, A_SMEAN_STEP) = smean;
+      d.atom_state(i, A_SMEAN_LAW) = d.smean_pred(i);
+    }
+  }
+
+  // bring automaton i's copies of the links its partners evaluate up to date
+  template <class D> MCA_FUNCTION void sync_rows_of(const D &d, int i)
+  {
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const int j = d.partner(i, m);
+      if (!partner_evaluates(d, i, j)) continue;
+      const double *from = d.history_row(j, d.row(i, m));
+      double *to = d.history_row(i, m);
+      for (int k = 0; k < d.layout.row_size; k++) to[k] = from[k];
+    }
+  }
+
+}    // namespace MCAKernels
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,224 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "mca_materials.h"
+
+#include "comm.h"
+#include "error.h"
+#include "memory.h"
+
+#include <cstring>
+#include <limits>
+
+using namespace LAMMPS_NS;
+using namespace MCAKernels;
+
+namespace {
+
+/* ----------------------------------------------------------------------
+   the pair_coeff keywords of a material.  A new parameter is a field of
+   MCAMaterial, a line here and a line in doc/src/pair_mca.rst; restart
+   files name their keywords, so older files read the others as unset
+------------------------------------------------------------------------- */
+
+struct Keyword {
+  const char *name;
+  double MCAMaterial::*field;
+  const char *what;    // for error messages
+  // allowed values: lo < v < hi (open) or lo <= v (closed lower bound)
+  double lo, hi;
+  bool lo_closed;
+  const char *range;    // as the error message says it
+};
+
+constexpr double INF = std::numeric_limits<double>::infinity();
+
+const Keyword KEYWORDS[] = {
+    {"E", &MCAMaterial::youngs, "Young's modulus E", 0.0, INF, false, "> 0"},
+    {"nu", &MCAMaterial::poisson, "Poisson's ratio nu", -1.0, 0.5, false, "in (-1, 0.5)"},
+    {"rho", &MCAMaterial::density, "density rho", 0.0, INF, false, "> 0"},
+};
+constexpr int NKEYWORDS = sizeof(KEYWORDS) / sizeof(KEYWORDS[0]);
+
+// further limits of the model, beyond the physical range of a keyword
+void check_model(Error *error, const Keyword &key, double value)
+{
+  // the mean-stress term D = 3 nu/(1 + nu) feeds each step's prediction
+  // error into the next with factor D; it must stay below 1 in size
+  if (key.field == &MCAMaterial::poisson && value <= -0.25)
+    error->all(FLERR,
+               "Pair mca: Poisson's ratio nu = {} is not supported: the mean-stress "
+               "predictor needs nu > -0.25 (|3 nu/(1 + nu)| < 1)",
+               value);
+}
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+MCAMaterials::MCAMaterials(LAMMPS *lmp) : Pointers(lmp), ntypes(0), type(nullptr), set(nullptr) {}
+
+MCAMaterials::~MCAMaterials()
+{
+  memory->sfree(type);
+  memory->destroy(set);
+}
+
+void MCAMaterials::allocate(int n)
+{
+  ntypes = n;
+  memory->sfree(type);
+  memory->destroy(set);
+  type = (MCAMaterial *) memory->smalloc((n + 1) * sizeof(MCAMaterial), "pair:material");
+  memory->create(set, n + 1, "pair:material_set");
+  for (int i = 0; i <= n; i++) {
+    type[i] = MCAMaterial();
+    set[i] = 0;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+bool MCAMaterials::parse(const std::string &key, const char *value, Input &in)
+{
+  for (int k = 0; k < NKEYWORDS; k++) {
+    const Keyword &kw = KEYWORDS[k];
+    if (key != kw.name) continue;
+    const double v = utils::numeric(FLERR, value, false, lmp);
+    const bool ok = (kw.lo_closed ? v >= kw.lo : v > kw.lo) && v < kw.hi;
+    if (!ok) error->all(FLERR, "Pair mca: {} must be {}, got {}", kw.what, kw.range, v);
+    check_model(error, kw, v);
+    in.values.*kw.field = v;
+    in.given |= 1u << k;
+    return true;
+  }
+  return false;
+}
+
+void MCAMaterials::assign(int lo, int hi, const Input &in)
+{
+  if (in.given != (1u << NKEYWORDS) - 1)
+    error->all(FLERR, "Pair mca: a material needs all of {} in one pair_coeff", keyword_list());
+  for (int i = lo; i <= hi; i++) {
+    type[i] = in.values;
+    derive_material(type[i]);
+    set[i] = 1;
+  }
+}
+
+void MCAMaterials::check_all_set() const
+{
+  for (int i = 1; i <= ntypes; i++)
+    if (!set[i])
+      error->all(FLERR,
+                 "Pair mca: no material (E, nu, rho) for atom type {}: use pair_coeff {} {} "
+                 "E value nu value rho value",
+                 i, i, i);
+}
+
+std::string MCAMaterials::keyword_list() const
+{
+  std::string list;
+  for (int k = 0; k < NKEYWORDS; k++) {
+    if (k) list += k + 1 < NKEYWORDS ? ", " : " and ";
+    list += KEYWORDS[k].name;
+  }
+  return list;
+}
+
+/* ----------------------------------------------------------------------
+   restart files: the keyword names once, then per type its flag and the
+   values in that order
+------------------------------------------------------------------------- */
+
+void MCAMaterials::write_restart(FILE *fp) const
+{
+  std::string names;
+  for (int k = 0; k < NKEYWORDS; k++) names += std::string(k ? " " : "") + KEYWORDS[k].name;
+  const int nkey = NKEYWORDS, len = names.size() + 1;
+  fwrite(&nkey, sizeof(int), 1, fp);
+  fwrite(&len, sizeof(int), 1, fp);
+  fwrite(names.c_str(), sizeof(char), len, fp);
+  for (int i = 1; i <= ntypes; i++) {
+    fwrite(&set[i], sizeof(int), 1, fp);
+    for (int k = 0; k < NKEYWORDS; k++)
+      fwrite(&(type[i].*KEYWORDS[k].field), sizeof(double), 1, fp);
+  }
+}
+
+void MCAMaterials::read_restart(FILE *fp)
+{
+  int nkey = 0, len = 0;
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &nkey, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &len, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&nkey, 1, MPI_INT, 0, world);
+  MPI_Bcast(&len, 1, MPI_INT, 0, world);
+  std::vector<char> names(len);
+  if (comm->me == 0) utils::sfread(FLERR, names.data(), sizeof(char), len, fp, nullptr, error);
+  MPI_Bcast(names.data(), len, MPI_CHAR, 0, world);
+
+  // which keyword of this version each value of the file is
+  std::vector<int> which;
+  for (const auto &name : utils::split_words(std::string(names.data()))) {
+    int found = -1;
+    for (int k = 0; k < NKEYWORDS; k++)
+      if (name == KEYWORDS[k].name) found = k;
+    if (found < 0)
+      error->all(FLERR,
+                 "Restart file holds the material parameter {} of pair mca, which this "
+                 "version does not know (it knows {})",
+                 name, keyword_list());
+    which.push_back(found);
+  }
+  if ((int) which.size() != nkey) error->all(FLERR, "Invalid pair mca materials in restart file");
+
+  std::vector<double> values(nkey);
+  for (int i = 1; i <= ntypes; i++) {
+    if (comm->me == 0) {
+      utils::sfread(FLERR, &set[i], sizeof(int), 1, fp, nullptr, error);
+      utils::sfread(FLERR, values.data(), sizeof(double), nkey, fp, nullptr, error);
+    }
+    MPI_Bcast(&set[i], 1, MPI_INT, 0, world);
+    MPI_Bcast(values.data(), nkey, MPI_DOUBLE, 0, world);
+    type[i] = MCAMaterial();
+    for (int v = 0; v < nkey; v++) type[i].*KEYWORDS[which[v]].field = values[v];
+    if (set[i]) derive_material(type[i]);
+  }
+}
+
+void MCAMaterials::read_restart_values(int i, const double *youngs_nu_rho, int set_flag)
+{
+  type[i] = MCAMaterial();
+  type[i].youngs = youngs_nu_rho[0];
+  type[i].poisson = youngs_nu_rho[1];
+  type[i].density = youngs_nu_rho[2];
+  set[i] = set_flag;
+  if (set[i]) derive_material(type[i]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double *MCAMaterials::column(const char *keyword)
+{
+  for (int k = 0; k < NKEYWORDS; k++) {
+    if (strcmp(keyword, KEYWORDS[k].name) != 0) continue;
+    columns.assign(ntypes + 1, 0.0);
+    for (int i = 1; i <= ntypes; i++) columns[i] = type[i].*KEYWORDS[k].field;
+    return columns.data();
+  }
+  return nullptr;
+}

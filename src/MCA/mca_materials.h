@@ -1,0 +1,71 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_MCA_MATERIALS_H
+#define LMP_MCA_MATERIALS_H
+
+#include "mca_material.h"
+#include "pointers.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   the materials of the atom types of pair_style mca: one MCAMaterial per
+   type, parsed and checked here from the pair_coeff keywords of the
+   keyword table (mca_materials.cpp), written to and read from restart
+   files by keyword name, and handed to the kernels as one array
+------------------------------------------------------------------------- */
+
+class MCAMaterials : protected Pointers {
+  typedef MCAKernels::MCAMaterial MCAMaterial;
+
+ public:
+  MCAMaterials(class LAMMPS *);
+  ~MCAMaterials() override;
+
+  void allocate(int ntypes);
+  // what one pair_coeff gives: the values of the keywords it names
+  struct Input {
+    MCAMaterial values;
+    unsigned given = 0;    // bit k: keyword k of the table was given
+  };
+  // parse "key value" into in; false if key is no material keyword
+  bool parse(const std::string &key, const char *value, Input &in);
+  // the material of types lo..hi, all keywords needed
+  void assign(int lo, int hi, const Input &in);
+  // an error naming the first type without a material, if any
+  void check_all_set() const;
+  std::string keyword_list() const;
+
+  void write_restart(FILE *) const;
+  void read_restart(FILE *);
+  // the layout of restart files before materials were written by name
+  void read_restart_values(int type, const double *youngs_nu_rho, int set_flag);
+
+  // per-type column of one input keyword (pair extract), nullptr if none
+  double *column(const char *keyword);
+
+  int ntypes;
+  MCAMaterial *type;    // [ntypes + 1]
+  int *set;             // [ntypes + 1]: 1 once the type has a material
+
+ private:
+  std::vector<double> columns;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

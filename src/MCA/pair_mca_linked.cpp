@@ -1,0 +1,273 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "pair_mca_linked.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "mca_compat.h"
+#include "mca_link_passes.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <cctype>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace MCAKernels;
+
+// the links fix has a fixed ID, so that restart files find it again
+static const char FIX_LINKS_ID[] = "MCA_LINKS";
+
+/* ---------------------------------------------------------------------- */
+
+PairMCALinked::PairMCALinked(LAMMPS *lmp, const char *label_) :
+    Pair(lmp), links(nullptr), label(label_), capacity_user(0), cut_global(0.0),
+    partner_cache(nullptr), row_cache(nullptr), cache_rows(0), cache_cols(0), cache_nlocal(-1),
+    partner_rows_stale(0), nstretched(0)
+{
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairMCALinked::~PairMCALinked()
+{
+  if (copymode) return;
+  memory->destroy(partner_cache);
+  memory->destroy(row_cache);
+  // the links fix is kept: a pair style command issued again (e.g. to
+  // change a setting) finds the links and their history; clear removes it
+  auto fix = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
+  if (fix && fix->row_sync == this) fix->row_sync = nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairMCALinked::init_links()
+{
+  links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
+  if (!links)
+    links = dynamic_cast<FixMCALinks *>(modify->add_fix(
+        fmt::format("{} all {} {}", FIX_LINKS_ID, links_fix_style(), model.describe())));
+  if (!links->model.same_blocks(model))
+    error->all(FLERR,
+               "{}: the link model ({}) differs from the one the links were made with ({}); "
+               "write a restart file and read it with the new model",
+               label, model.describe(), links->model.describe());
+  links->row_sync = this;
+}
+
+/* ----------------------------------------------------------------------
+   at the first run: link the pairs the style says are linkable, from a
+   full neighbor list
+------------------------------------------------------------------------- */
+
+void PairMCALinked::create_links()
+{
+  NeighList *full = links->build_full_list();
+  const int inum = full->inum;
+  const int *ilist = full->ilist;
+  const int *numneigh = full->numneigh;
+  int **firstneigh = full->firstneigh;
+  const tagint *tag = atom->tag;
+
+  // capacity: the user's, or the largest number of links of an automaton
+  int nmost = 0;
+  tagint worst = 0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    int n = 0;
+    for (int jj = 0; jj < numneigh[i]; jj++)
+      if (linkable(i, firstneigh[i][jj] & NEIGHMASK)) n++;
+    if (n > nmost) {
+      nmost = n;
+      worst = tag[i];
+    }
+  }
+  int nmostall;
+  MPI_Allreduce(&nmost, &nmostall, 1, MPI_INT, MPI_MAX, world);
+  if (capacity_user > 0 && nmostall > capacity_user) {
+    tagint worst_local = (nmost == nmostall) ? worst : MAXTAGINT, worst_all;
+    MPI_Allreduce(&worst_local, &worst_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    error->all(FLERR,
+               "{}: automaton {} has {} neighbours to link, more than the capacity "
+               "{} (pair_style mca capacity); reduce the link tolerance or raise the capacity",
+               label, worst_all, nmostall, capacity_user);
+  }
+  links->set_capacity(capacity_user > 0 ? capacity_user : MAX(nmostall, 1));
+
+  const int row_size = links->row_size;
+  bigint nlocal_links = 0;
+  int duplicate = 0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    int &n = links->nlinks[i];
+    n = 0;
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = firstneigh[i][jj] & NEIGHMASK;
+      if (!linkable(i, j)) continue;
+      // two images of one partner: the periodic box is too small
+      for (int k = 0; k < n; k++)
+        if (links->partner[i][k] == tag[j]) duplicate = 1;
+      double *row = &links->history[i][n * row_size];
+      for (int k = 0; k < row_size; k++) row[k] = 0.0;
+      init_link_row(i, j, row);
+      links->partner[i][n] = tag[j];
+      n++;
+    }
+    nlocal_links += n;
+  }
+  int duplicate_all;
+  MPI_Allreduce(&duplicate, &duplicate_all, 1, MPI_INT, MPI_MAX, world);
+  if (duplicate_all)
+    error->all(FLERR,
+               "{}: an automaton would link to two periodic images of the same "
+               "automaton; every periodic box length must exceed twice the link length "
+               "(2 (1 + tolerance) (R_i + R_j))",
+               label);
+  links->created = 1;
+
+  bigint nall_links;
+  MPI_Allreduce(&nlocal_links, &nall_links, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0) {
+    std::string name(label);
+    name[0] = tolower(name[0]);
+    utils::logmesg(lmp, "{}: {} links made, at most {} per automaton\n", name, nall_links / 2,
+                   nmostall);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   local and ghost indices change only when LAMMPS reneighbors; the
+   partner copies were brought up to date before the atoms moved
+------------------------------------------------------------------------- */
+
+bool PairMCALinked::refresh_partners()
+{
+  if (neighbor->ago != 0 && cache_nlocal == atom->nlocal) return false;
+  if (partner_rows_stale)
+    error->one(FLERR, "{}: atoms were reordered while link rows were out of date", label);
+  build_partner_cache();
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   index of every link's partner (closest image) and, for a local partner,
+   the row of the same link in the partner's table
+------------------------------------------------------------------------- */
+
+void PairMCALinked::build_partner_cache()
+{
+  const int nlocal = atom->nlocal;
+  const tagint *tag = atom->tag;
+  if (cache_rows < atom->nmax || cache_cols < links->maxlinks) {
+    cache_rows = atom->nmax;
+    cache_cols = links->maxlinks;
+    allocate_partner_cache();
+  }
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < links->nlinks[i]; m++) {
+      const int j = partner_index(i, links->partner[i][m]);
+      partner_cache[i][m] = j;
+      row_cache[i][m] = -1;
+      if (j < nlocal)
+        for (int k = 0; k < links->nlinks[j]; k++)
+          if (links->partner[j][k] == tag[i]) row_cache[i][m] = k;
+      if (j < nlocal && row_cache[i][m] < 0)
+        error->one(FLERR, "{}: automaton {} is linked to {} but not the other way", label, tag[i],
+                   tag[j]);
+    }
+  cache_nlocal = nlocal;
+}
+
+void PairMCALinked::allocate_partner_cache()
+{
+  memory->destroy(partner_cache);
+  memory->destroy(row_cache);
+  memory->create(partner_cache, cache_rows, cache_cols, "pair:partner_cache");
+  memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
+}
+
+/* ----------------------------------------------------------------------
+   index of automaton partner_tag as seen from i: the image closest to i;
+   a link whose partner is not a local or ghost atom cannot be computed
+------------------------------------------------------------------------- */
+
+int PairMCALinked::partner_index(int i, tagint partner_tag)
+{
+  const int j = atom->map(partner_tag);
+  if (j < 0)
+    error->one(FLERR,
+               "{}: the link of automaton {} to automaton {} is lost: the partner is "
+               "farther than the communication cutoff {} (stretched link, or a deleted automaton); "
+               "increase it with comm_modify cutoff or pair_style mca cutoff",
+               label, atom->tag[i], partner_tag, cut_global + neighbor->skin);
+  return domain->closest_image(i, j);
+}
+
+/* ---------------------------------------------------------------------- */
+
+MCAHostLinks PairMCALinked::host_links() const
+{
+  MCAHostLinks d;
+  d.nlocal = atom->nlocal;
+  d.layout = model.layout();
+  d.tag_ = atom->tag;
+  d.nlinks_ = links->nlinks;
+  d.partner_ = partner_cache;
+  d.row_ = row_cache;
+  d.history_ = links->history;
+  d.atom_state_ = links->atom_state;
+  return d;
+}
+
+/* ----------------------------------------------------------------------
+   copy each local link's current row (lower ID) to the partner's row;
+   called by the links fix before atoms move (pre-exchange), at the end of
+   a run and before a restart file is written.  Costs one pass over the
+   links, against a copy per link and step if done in compute()
+------------------------------------------------------------------------- */
+
+void PairMCALinked::sync_link_rows()
+{
+  if (!partner_rows_stale) return;
+  if (cache_nlocal != atom->nlocal)
+    error->one(FLERR, "{}: atoms were reordered while link rows were out of date", label);
+  const MCAHostLinks d = host_links();
+  for (int i = 0; i < d.nlocal; i++) sync_rows_of(d, i);
+  partner_rows_stale = 0;
+}
+
+/* ----------------------------------------------------------------------
+   a link longer than the cutoff still acts (its partner is found through
+   the atom map) but may be lost when it stretches beyond the ghost shell;
+   reported on reneighboring steps (and at setup)
+------------------------------------------------------------------------- */
+
+void PairMCALinked::stretched_warning()
+{
+  bigint nall;
+  MPI_Allreduce(&nstretched, &nall, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nall > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "{}: {} links are longer than the cutoff {} at step {}; a link "
+                   "whose partner leaves the ghost atoms stops the run",
+                   label, nall / 2, cut_global, update->ntimestep);
+}

@@ -1,0 +1,98 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PAIR_MCA_LINKED_H
+#define LMP_PAIR_MCA_LINKED_H
+
+#include "fix_mca_links.h"
+#include "mca_link_model.h"
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   the link table as the passes of mca_link_passes.h read it on the host
+   (the Kokkos styles read the same names from their views)
+------------------------------------------------------------------------- */
+
+struct MCAHostLinks {
+  int nlocal;
+  MCAKernels::MCALinkLayout layout;
+  const tagint *tag_;
+  const int *nlinks_;
+  int **partner_;    // local or ghost index of each link's partner
+  int **row_;        // row of the same link in a local partner's table
+  double **history_;
+  double **atom_state_;
+
+  tagint tag(int i) const { return tag_[i]; }
+  int nlinks(int i) const { return nlinks_[i]; }
+  int partner(int i, int m) const { return partner_[i][m]; }
+  int row(int i, int m) const { return row_[i][m]; }
+  double *history_row(int i, int m) const { return &history_[i][m * layout.row_size]; }
+  double &atom_state(int i, int k) const { return atom_state_[i][k]; }
+};
+
+/* ----------------------------------------------------------------------
+   base of the pair styles whose automata keep persistent links (the
+   links fix): the fix made with the blocks of the style's link model,
+   the links made at the first run, the index of every link's partner,
+   the partner copies of links between local automata, and the warning
+   for links longer than the cutoff.  A derived style says which pairs
+   link (linkable) and what a new link's row holds (init_link_row)
+------------------------------------------------------------------------- */
+
+class PairMCALinked : public Pair, public MCALinkRowSync {
+ public:
+  PairMCALinked(class LAMMPS *, const char *label);
+  ~PairMCALinked() override;
+
+  class FixMCALinks *links;
+  // a link between two local automata is advanced in the row of the
+  // lower ID only; the partner's row is brought up to date on request
+  void sync_link_rows() override;
+
+ protected:
+  const char *label;    // "Pair mca": how error messages name the style
+  int capacity_user;    // links per automaton given by the user, else 0
+  double cut_global;
+
+  int **partner_cache;    // local or ghost index of each link's partner
+  int **row_cache;        // row of the same link in a local partner's table
+  int cache_rows, cache_cols, cache_nlocal;
+  int partner_rows_stale;    // rows of local links behind their partner's copy
+  bigint nstretched;         // links longer than the cutoff at the last step
+
+  MCALinkModel model;    // the parts of the link law and their blocks
+  // the links fix with the blocks of the model (made or found)
+  void init_links();
+  // style of the internal fix that keeps the links
+  virtual const char *links_fix_style() const { return "MCA_LINKS"; }
+
+  void create_links();
+  virtual bool linkable(int i, int j) = 0;
+  virtual void init_link_row(int i, int j, double *row) = 0;
+
+  // the partner cache after LAMMPS reneighbored (or atoms moved): true
+  // if it was made again
+  bool refresh_partners();
+  void build_partner_cache();
+  virtual void allocate_partner_cache();
+  int partner_index(int i, tagint partner_tag);
+  MCAHostLinks host_links() const;
+  void stretched_warning();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
