@@ -47,16 +47,19 @@ def run_mode(mode, n, steps, outdir, repeat=1, name="kokkos"):
     return min(results, key=lambda r: r["us_wall"])
 
 
-def run_once(mode, n, steps, outdir, name="kokkos"):
+def run_once(mode, n, steps, outdir, name="kokkos", lmp="lmp"):
     ranks, threads, kokkos = MODES[mode]
     log = os.path.join(outdir, f"log.{name}.{mode}.n{n}")
-    cmd = ["lmp", "-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
+    cmd = [lmp, "-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
            "-var", "n", str(n), "-var", "nsteps", str(steps), "-log", log, "-screen", "none"]
     if kokkos:
         cmd += [a.format(threads=threads) for a in KK]
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks)] + cmd
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false")
+    # a copied shared-library build loads the library next to it
+    env["LD_LIBRARY_PATH"] = os.path.dirname(os.path.abspath(lmp)) + ":" + env.get(
+        "LD_LIBRARY_PATH", "") if os.sep in lmp else env.get("LD_LIBRARY_PATH", "")
     subprocess.run(cmd, cwd=HERE, env=env, check=True)
     with open(log) as f:
         result = parse_log(f.read())
