@@ -34,11 +34,9 @@ namespace LAMMPS_NS {
 class MCALinkModel {
  public:
   struct Block {
-    int part;            // LinkPart id
     std::string name;    // the part's name, as restart files record it
     int link_size;       // doubles per link row
     int atom_size;       // doubles of law state per automaton
-    int link_offset, atom_offset;
   };
 
   MCALinkModel()
@@ -49,14 +47,13 @@ class MCALinkModel {
 
   void add_part(int part, const std::string &name, int link_size, int atom_size)
   {
-    Block b{part, name, link_size, atom_size, layout_.row_size, layout_.atom_size};
     if (part >= 0 && part < MCAKernels::MAX_PARTS) {
       layout_.link_offset[part] = layout_.row_size;
       layout_.atom_offset[part] = layout_.atom_size;
     }
     layout_.row_size += link_size;
     layout_.atom_size += atom_size;
-    blocks_.push_back(b);
+    blocks_.push_back(Block{name, link_size, atom_size});
   }
 
   const std::vector<Block> &blocks() const { return blocks_; }
