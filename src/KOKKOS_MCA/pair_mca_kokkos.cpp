@@ -367,7 +367,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
 
   // the partner cache is made on the host when LAMMPS reneighbors (the
   // atom map and the closest images live there)
-  if (neighbor->ago == 0 || cache_nlocal != atom->nlocal) {
+  if (partners_outdated()) {
     atomKK->sync(Host, X_MASK | TAG_MASK);
     links->to_host();
     refresh_partners();
@@ -439,9 +439,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
 
 template <class DeviceType> void PairMCAKokkos<DeviceType>::sync_link_rows()
 {
-  if (!partner_rows_stale) return;
-  if (cache_nlocal != atom->nlocal)
-    error->one(FLERR, "{}: atoms were reordered while link rows were out of date", label);
+  if (!rows_to_sync()) return;
   linksKK->to_device();
   MCASyncRows<DeviceType> rows;
   rows.d = views();

@@ -316,7 +316,8 @@ void FixMCALinks::restart(char *buf)
       file.add_part(-1, names[b], static_cast<int>(list[4 + 2 * b]),
                     static_cast<int>(list[5 + 2 * b]));
   } else {
-    file.add_part(PART_ELASTIC, "elastic", H_SIZE, A_SIZE);
+    const MCALinkPartInfo &elastic = MCA_LINK_PARTS[PART_ELASTIC];
+    file.add_part(elastic.part, elastic.name, elastic.link_size, elastic.atom_size);
   }
   if (!model.same_blocks(file))
     error->all(FLERR,

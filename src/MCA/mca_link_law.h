@@ -126,6 +126,8 @@ namespace MCAKernels {
       {"elastic", "elastic", PART_ELASTIC, H_SIZE, A_SIZE, true},
   };
   constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
+  static_assert(MCA_LINK_PARTS[PART_ELASTIC].part == PART_ELASTIC,
+                "MCA_LINK_PARTS lists the elastic part at its id");
 
   /* ----------------------------------------------------------------------
      one step of a linked pair, all in canonical order (lo, hi):

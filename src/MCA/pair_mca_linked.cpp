@@ -159,9 +159,14 @@ void PairMCALinked::create_links()
    partner copies were brought up to date before the atoms moved
 ------------------------------------------------------------------------- */
 
+bool PairMCALinked::partners_outdated() const
+{
+  return neighbor->ago == 0 || cache_nlocal != atom->nlocal;
+}
+
 bool PairMCALinked::refresh_partners()
 {
-  if (neighbor->ago != 0 && cache_nlocal == atom->nlocal) return false;
+  if (!partners_outdated()) return false;
   if (partner_rows_stale)
     error->one(FLERR, "{}: atoms were reordered while link rows were out of date", label);
   build_partner_cache();
@@ -245,11 +250,17 @@ MCAHostLinks PairMCALinked::host_links() const
    links, against a copy per link and step if done in compute()
 ------------------------------------------------------------------------- */
 
-void PairMCALinked::sync_link_rows()
+bool PairMCALinked::rows_to_sync()
 {
-  if (!partner_rows_stale) return;
+  if (!partner_rows_stale) return false;
   if (cache_nlocal != atom->nlocal)
     error->one(FLERR, "{}: atoms were reordered while link rows were out of date", label);
+  return true;
+}
+
+void PairMCALinked::sync_link_rows()
+{
+  if (!rows_to_sync()) return;
   const MCAHostLinks d = host_links();
   for (int i = 0; i < d.nlocal; i++) sync_rows_of(d, i);
   partner_rows_stale = 0;

@@ -85,7 +85,11 @@ class PairMCALinked : public Pair, public MCALinkRowSync {
 
   // the partner cache after LAMMPS reneighbored (or atoms moved): true
   // if it was made again
+  bool partners_outdated() const;
   bool refresh_partners();
+  // whether partner rows are behind and must be copied now (an error if
+  // the atoms were reordered since)
+  bool rows_to_sync();
   void build_partner_cache();
   virtual void allocate_partner_cache();
   int partner_index(int i, tagint partner_tag);
