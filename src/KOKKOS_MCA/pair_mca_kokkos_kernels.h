@@ -68,6 +68,11 @@ template <class DeviceType> struct MCAPairViews {
 
   int nlocal;
 
+  // the link pass reads a row's state before the ownership test where the
+  // memory is the host's (see mca_link_passes.h)
+  static constexpr bool row_state_first =
+      Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename DeviceType::memory_space>::accessible;
+
   // a row of x or omega as 3 contiguous doubles (the views' layout may be
   // LayoutLeft on a device)
   template <class View>

@@ -71,10 +71,14 @@ namespace MCAKernels {
   constexpr int HALF_SIG = 0, HALF_EPS = 1, HALF_T = 2, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8;
   enum LinkState { LINK_NONE = 0, LINK_LINKED = 1 };
 
-  // the elastic block of an automaton's law state
-  constexpr int A_SMEAN_STEP = 0;    // mean stress from the tractions at the last step
-  constexpr int A_SMEAN_LAW = 1;     // mean stress the normal law used at the last step
-  constexpr int A_SIZE = 2;
+  // the elastic block of an automaton's law state (enumerators, not
+  // constexpr variables: a Kokkos view takes its indices by reference, and
+  // CUDA device code cannot refer to a host variable)
+  enum AtomLawState {
+    A_SMEAN_STEP = 0,    // mean stress from the tractions at the last step
+    A_SMEAN_LAW,         // mean stress the normal law used at the last step
+    A_SIZE               // size of the elastic block
+  };
 
   // the longest row a pass copies on the stack (a setup works on a copy)
   constexpr int MAX_ROW_SIZE = 128;

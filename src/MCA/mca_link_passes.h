@@ -23,7 +23,9 @@
             d.nlinks(i), d.partner(i, m) (local or
             ghost index), d.row(i, m) (row of the same link in a local
             partner's table), d.history_row(i, m), d.atom_state(i, k),
-            d.material(type), ... (PairMCA::HostData, MCAPairViews)
+            d.material(type), ...; D::row_state_first: whether the link
+            pass reads a row's state before the ownership test (true on a
+            CPU) (PairMCA::HostData, MCAPairViews)
      Sums   where a link adds to its two automata: begin(i) gives the
             adder of automaton i; own(add, i, k, v) adds v to column k of
             i, partner_of(add, j) the target of a local partner,
@@ -157,12 +159,14 @@ namespace MCAKernels {
   {
     auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
-      // (the row's state is read first: where rows come from memory, its
-      // load then overlaps the others)
+      // on a CPU the row's state is read first: its load then overlaps the
+      // others.  On a GPU it is read only for the links this thread
+      // evaluates (a load of a link the partner evaluates is wasted traffic)
       double *row = d.history_row(i, m);
-      if (!linked(row)) continue;
+      if (D::row_state_first && !linked(row)) continue;
       const int j = d.partner(i, m);
       if (partner_evaluates(d, i, j)) continue;
+      if (!D::row_state_first && !linked(row)) continue;
       const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
@@ -194,10 +198,12 @@ namespace MCAKernels {
 
       // force on lo is f, on hi -f; T n^T is the same for both
       const double sign = ilo ? 1.0 : -1.0;
-      const double *tq = ilo ? out.tq_lo : out.tq_hi;
+      // (a value chosen per component, not a pointer to one of the two
+      // arrays: a pointer chosen at run time puts all of out in the local
+      // memory of a GPU thread, which costs the link pass 10 %)
       for (int k = 0; k < 3; k++) {
         sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
-        sums.own(add, i, LS_TORQUE + k, tq[k]);
+        sums.own(add, i, LS_TORQUE + k, ilo ? out.tq_lo[k] : out.tq_hi[k]);
       }
       for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) sums.own(add, i, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);

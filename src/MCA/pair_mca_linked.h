@@ -26,6 +26,7 @@ namespace LAMMPS_NS {
 ------------------------------------------------------------------------- */
 
 struct MCAHostLinks {
+  static constexpr bool row_state_first = true;    // see mca_link_passes.h
   int nlocal;
   MCAKernels::MCALinkLayout layout;
   const tagint *tag_;
