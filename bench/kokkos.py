@@ -47,11 +47,13 @@ def run_mode(mode, n, steps, outdir, repeat=1, name="kokkos"):
     return min(results, key=lambda r: r["us_wall"])
 
 
-def run_once(mode, n, steps, outdir, name="kokkos", lmp="lmp"):
+def run_once(mode, n, steps, outdir, name="kokkos", lmp="lmp", variables=None):
     ranks, threads, kokkos = MODES[mode]
     log = os.path.join(outdir, f"log.{name}.{mode}.n{n}")
     cmd = [lmp, "-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
            "-var", "n", str(n), "-var", "nsteps", str(steps), "-log", log, "-screen", "none"]
+    for key, value in (variables or {}).items():
+        cmd += ["-var", key, str(value)]
     if kokkos:
         cmd += [a.format(threads=threads) for a in KK]
     if ranks > 1:

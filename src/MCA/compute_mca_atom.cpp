@@ -74,7 +74,13 @@ void ComputeMCAAtom::init()
 {
   avec = MCAAtomFields::find(atom);
   if (!avec) error->all(FLERR, "Compute mca/atom requires atom_style mca");
+  // the values are what the pair style stored at its last force
+  // evaluation: without it they would be zeros or stale
   links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, "MCA_LINKS"));
+  if (!links)
+    error->all(FLERR,
+               "Compute mca/atom requires pair_style mca (its values are those of the pair "
+               "style's last force evaluation)");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -86,7 +92,6 @@ double ComputeMCAAtom::value(int i, int w)
   if (w == SEQ) return avec->seq[i];
   if (w == EEQ) return avec->eeq[i];
   // links: linked partners of the automaton
-  if (!links) return 0.0;
   int n = 0;
   for (int m = 0; m < links->nlinks[i]; m++)
     if (static_cast<int>(links->history[i][m * links->row_size + MCAKernels::H_STATE]) ==

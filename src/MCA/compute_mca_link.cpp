@@ -22,7 +22,7 @@
 #include "fix_mca_links.h"
 #include "mca_compat.h"
 #include "mca_geometry.h"
-#include "mca_link_layout.h"
+#include "mca_link_law.h"
 #include "memory.h"
 #include "update.h"
 
@@ -33,9 +33,9 @@ using namespace LAMMPS_NS;
 using namespace MCAKernels;
 
 namespace {
-enum { ID1, ID2, STATE, LENGTH, STRAIN, NORMAL, SHEAR, AREA, FORCE, ENERGY, NKEYWORD };
-const char *const keywords[NKEYWORD] = {"id1",    "id2",   "state", "length", "strain",
-                                        "normal", "shear", "area",  "force",  "energy"};
+enum { ID1, ID2, STATE, LENGTH, STRAIN, NORMAL, SHEAR, AREA, FORCE, ENERGY, DISSIPATED, NKEYWORD };
+const char *const keywords[NKEYWORD] = {"id1",   "id2",  "state", "length", "strain",    "normal",
+                                        "shear", "area", "force", "energy", "dissipated"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -53,7 +53,7 @@ ComputeMCALink::ComputeMCALink(LAMMPS *lmp, int narg, char **arg) :
     if (k == NKEYWORD)
       error->all(FLERR,
                  "Unknown compute mca/link keyword {} (allowed: id1 id2 state length "
-                 "strain normal shear area force energy)",
+                 "strain normal shear area force energy dissipated)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -123,6 +123,8 @@ void ComputeMCALink::compute_local()
   double **x = atom->x;
   const tagint *tag = atom->tag;
   const int ncols = MAX(size_local_cols, 1);
+  // the damping block, if the link model has one
+  const int damping = links->model.layout().link_offset[PART_DAMPING];
   int row = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
@@ -144,6 +146,7 @@ void ComputeMCALink::compute_local()
       for (int k = 0; k < 3; k++) t[k] = 0.5 * (h[H_LO + HALF_T + k] + h[H_HI + HALF_T + k]);
       const double tau = sqrt(dot3(t, t));
       const double area = h[H_APREV];
+      const double dissipated = damping >= 0 ? h[damping + D_WORK] : 0.0;
       for (int c = 0; c < ncols; c++) {
         double value = 0.0;
         switch (which[c]) {
@@ -176,6 +179,9 @@ void ComputeMCALink::compute_local()
             break;
           case ENERGY:
             value = h[H_WORK];
+            break;
+          case DISSIPATED:
+            value = dissipated;
             break;
         }
         if (size_local_cols == 0)

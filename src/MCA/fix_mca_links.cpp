@@ -49,7 +49,8 @@ FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
                "Illegal fix MCA_LINKS command (internal fix of pair mca: the blocks of its "
                "link model as name link_size atom_size)");
   for (int iarg = 3; iarg < narg; iarg += 3)
-    model.add_part(-1, arg[iarg], utils::inumeric(FLERR, arg[iarg + 1], false, lmp),
+    model.add_part(link_part_id(arg[iarg]), arg[iarg],
+                   utils::inumeric(FLERR, arg[iarg + 1], false, lmp),
                    utils::inumeric(FLERR, arg[iarg + 2], false, lmp));
   row_size = model.layout().row_size;
   atom_size = model.layout().atom_size;

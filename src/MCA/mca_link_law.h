@@ -23,6 +23,7 @@
 #include "mca_material.h"
 
 #include <cmath>
+#include <string>
 
 namespace LAMMPS_NS {
 namespace MCAKernels {
@@ -111,7 +112,12 @@ namespace MCAKernels {
      its kernel in the link step below and its doc (Developer_mca.rst)
   ------------------------------------------------------------------------- */
 
-  enum LinkPart { PART_ELASTIC = 0, NPARTS };
+  enum LinkPart { PART_ELASTIC = 0, PART_DAMPING, NPARTS };
+
+  // the block of the damping part in a link row: the damping force on lo
+  // of the last step (normal, tangential) and the energy the link's
+  // dampers dissipated
+  enum DampingSlot { D_FN = 0, D_FT, D_WORK = D_FT + 3, D_SIZE };
   static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");
 
   struct MCALinkPartInfo {
@@ -124,10 +130,20 @@ namespace MCAKernels {
 
   constexpr MCALinkPartInfo MCA_LINK_PARTS[] = {
       {"elastic", "elastic", PART_ELASTIC, H_SIZE, A_SIZE, true},
+      {"damping", "viscous", PART_DAMPING, D_SIZE, 0, false},
   };
   constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
   static_assert(MCA_LINK_PARTS[PART_ELASTIC].part == PART_ELASTIC,
                 "MCA_LINK_PARTS lists the elastic part at its id");
+
+  // the id of the part a block is named after (restart files and the links
+  // fix name blocks by their part's keyword), -1 if none
+  inline int link_part_id(const std::string &name)
+  {
+    for (const auto &p : MCA_LINK_PARTS)
+      if (name == p.name) return p.part;
+    return -1;
+  }
 
   /* ----------------------------------------------------------------------
      one step of a linked pair, all in canonical order (lo, hi):
@@ -136,6 +152,8 @@ namespace MCAKernels {
        shear_traction     carry shear tractions and couples with the pair,
                           elastic trial of the shear tractions
        link_forces        contact area, force, bending and torsion, torques
+       link_damping       (damping viscous) dashpot force and torques, the
+                          energy it dissipated
        link_work          elastic work of the step; the row is committed
      The inelastic parts of the link model (plastic return on the trial
      tractions, break check) act between the trial and link_forces; see
@@ -284,6 +302,56 @@ namespace MCAKernels {
     for (int m = 0; m < 3; m++) out.trac[m] = out.sig * n[m] + out.t[m];
   }
 
+  /* ----------------------------------------------------------------------
+     damping viscous: a dashpot of viscosity eta in each half, the two in
+     series, on the relative velocity of the contact points over the step
+     (dr/dt along n, the slip dl/dt across it), acting through the contact
+     area.  The force is not part of the tractions (the stress and the
+     mean-stress law stay elastic); it adds to the force and torques.  A
+     setup (dt = 0) applies the force of the last step again, as the
+     elastic part does; the dissipated energy is the trapezoidal work of
+     the force over the step, as the elastic energy is
+  ------------------------------------------------------------------------- */
+
+  // force per unit area and relative velocity of two dashpots in series:
+  // eta_lo eta_hi / (q_lo eta_hi + q_hi eta_lo), eta/r for equal halves
+  MCA_INLINE double series_viscosity(double eta_lo, double eta_hi, double q_lo, double q_hi)
+  {
+    const double den = q_lo * eta_hi + q_hi * eta_lo;
+    return den > 0.0 ? eta_lo * eta_hi / den : 0.0;
+  }
+
+  MCA_INLINE void link_damping(double *block, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                               const MCAMaterial &m_hi, const MCALinkMotion &mo, MCALinkForces &out)
+  {
+    const double *n = out.n;
+    double fn, ft[3];
+    if (e.dt > 0.0) {
+      const double c =
+          out.area * series_viscosity(m_lo.viscosity, m_hi.viscosity, mo.q_lo, mo.q_hi) / e.dt;
+      fn = c * mo.dr;
+      for (int m = 0; m < 3; m++) ft[m] = c * mo.dl[m];
+      double work = 0.5 * (block[D_FN] + fn) * mo.dr;
+      for (int m = 0; m < 3; m++) work += 0.5 * (block[D_FT + m] + ft[m]) * mo.dl[m];
+      block[D_WORK] += work;
+      block[D_FN] = fn;
+      for (int m = 0; m < 3; m++) block[D_FT + m] = ft[m];
+    } else {
+      // the last step's force, its shear part kept in the contact plane
+      fn = block[D_FN];
+      const double ftn = dot3(block + D_FT, n);
+      for (int m = 0; m < 3; m++) ft[m] = block[D_FT + m] - ftn * n[m];
+    }
+    double fd[3], nxf[3];
+    for (int m = 0; m < 3; m++) fd[m] = fn * n[m] + ft[m];
+    cross3(n, fd, nxf);
+    for (int m = 0; m < 3; m++) {
+      out.f[m] += fd[m];
+      out.tq_lo[m] += mo.q_lo * nxf[m];
+      out.tq_hi[m] += mo.q_hi * nxf[m];
+    }
+  }
+
   // elastic energy: work of the pair forces over the step, trapezoidal
   // rule with the forces that acted at the last step and now; the row
   // then holds this step's length, normal and area
@@ -316,6 +384,9 @@ namespace MCAKernels {
     normal_traction(hist, e, m_lo, m_hi, mo);
     shear_traction(hist, e, m_lo, m_hi, out.n, mo);
     link_forces(hist, e, m_lo, m_hi, mo, out);
+    // optional parts: one test each when they are off
+    const int damping = e.layout->link_offset[PART_DAMPING];
+    if (damping >= 0) link_damping(hist + damping, e, m_lo, m_hi, mo, out);
     link_work(hist, mo, out);
   }
 

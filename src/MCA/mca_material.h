@@ -63,9 +63,10 @@ namespace MCAKernels {
 
   struct MCAMaterial {
     // input
-    double youngs;     // Young's modulus E
-    double poisson;    // Poisson's ratio nu
-    double density;    // mass density rho
+    double youngs;       // Young's modulus E
+    double poisson;      // Poisson's ratio nu
+    double density;      // mass density rho
+    double viscosity;    // eta of the link damping (damping viscous; 0: none)
     // derived (derive_material)
     double shear;       // G
     double bulk;        // K

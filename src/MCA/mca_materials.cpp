@@ -19,6 +19,7 @@
 #include "error.h"
 #include "memory.h"
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -41,14 +42,16 @@ struct Keyword {
   double lo, hi;
   bool lo_closed;
   const char *range;    // as the error message says it
+  bool required;        // in every material (else 0 unless given)
 };
 
 constexpr double INF = std::numeric_limits<double>::infinity();
 
 const Keyword KEYWORDS[] = {
-    {"E", &MCAMaterial::youngs, "Young's modulus E", 0.0, INF, false, "> 0"},
-    {"nu", &MCAMaterial::poisson, "Poisson's ratio nu", -1.0, 0.5, false, "in (-1, 0.5)"},
-    {"rho", &MCAMaterial::density, "density rho", 0.0, INF, false, "> 0"},
+    {"E", &MCAMaterial::youngs, "Young's modulus E", 0.0, INF, false, "> 0", true},
+    {"nu", &MCAMaterial::poisson, "Poisson's ratio nu", -1.0, 0.5, false, "in (-1, 0.5)", true},
+    {"rho", &MCAMaterial::density, "density rho", 0.0, INF, false, "> 0", true},
+    {"eta", &MCAMaterial::viscosity, "viscosity eta", 0.0, INF, true, ">= 0 and finite", false},
 };
 constexpr int NKEYWORDS = sizeof(KEYWORDS) / sizeof(KEYWORDS[0]);
 
@@ -109,13 +112,36 @@ bool MCAMaterials::parse(const std::string &key, const char *value, Input &in)
 
 void MCAMaterials::assign(int lo, int hi, const Input &in)
 {
-  if (in.given != (1u << NKEYWORDS) - 1)
-    error->all(FLERR, "Pair mca: a material needs all of {} in one pair_coeff", keyword_list());
+  unsigned required = 0;
+  for (int k = 0; k < NKEYWORDS; k++)
+    if (KEYWORDS[k].required) required |= 1u << k;
+  if ((in.given & required) != required)
+    error->all(FLERR, "Pair mca: a material needs all of {} in one pair_coeff", keyword_list(true));
+  check_moduli(in.values);
   for (int i = lo; i <= hi; i++) {
     type[i] = in.values;
     derive_material(type[i]);
     set[i] = 1;
   }
+}
+
+/* ----------------------------------------------------------------------
+   the law forms moduli up to 3K + 4G = E (1/(1 - 2 nu) + 2/(1 + nu)) and
+   squares stresses of that order (energies, the equivalent stress): a
+   material whose 3K + 4G exceeds sqrt(DBL_MAX) would give inf or NaN in
+   the run, so it is refused here, with the largest E allowed at its nu
+------------------------------------------------------------------------- */
+
+void MCAMaterials::check_moduli(const MCAMaterial &m) const
+{
+  const double factor = 1.0 / (1.0 - 2.0 * m.poisson) + 2.0 / (1.0 + m.poisson);
+  const double limit = std::sqrt(std::numeric_limits<double>::max());
+  if (m.youngs * factor < limit) return;
+  error->all(FLERR,
+             "Pair mca: Young's modulus E = {} with nu = {} is too large: the law squares "
+             "stresses of the order of 3K + 4G = {:.4g} E, which must stay below sqrt(DBL_MAX) "
+             "= {:.4g}; E must be < {:.4g} at this nu",
+             m.youngs, m.poisson, factor, limit, limit / factor);
 }
 
 void MCAMaterials::check_all_set() const
@@ -128,12 +154,15 @@ void MCAMaterials::check_all_set() const
                  i, i, i);
 }
 
-std::string MCAMaterials::keyword_list() const
+std::string MCAMaterials::keyword_list(bool required_only) const
 {
+  std::vector<std::string> names;
+  for (const auto &kw : KEYWORDS)
+    if (kw.required || !required_only) names.push_back(kw.name);
   std::string list;
-  for (int k = 0; k < NKEYWORDS; k++) {
-    if (k) list += k + 1 < NKEYWORDS ? ", " : " and ";
-    list += KEYWORDS[k].name;
+  for (size_t k = 0; k < names.size(); k++) {
+    if (k) list += k + 1 < names.size() ? ", " : " and ";
+    list += names[k];
   }
   return list;
 }

@@ -39,8 +39,8 @@ class MCAMaterials : protected Pointers {
   void allocate(int ntypes);
   // what one pair_coeff gives: the values of the keywords it names
   struct Input {
-    MCAMaterial values;
-    unsigned given = 0;    // bit k: keyword k of the table was given
+    MCAMaterial values{};    // keywords not given stay 0
+    unsigned given = 0;      // bit k: keyword k of the table was given
   };
   // parse "key value" into in; false if key is no material keyword
   bool parse(const std::string &key, const char *value, Input &in);
@@ -48,7 +48,8 @@ class MCAMaterials : protected Pointers {
   void assign(int lo, int hi, const Input &in);
   // an error naming the first type without a material, if any
   void check_all_set() const;
-  std::string keyword_list() const;
+  // "E, nu, rho and eta" (all keywords) or those every material needs
+  std::string keyword_list(bool required_only = false) const;
 
   void write_restart(FILE *) const;
   void read_restart(FILE *);
@@ -64,6 +65,8 @@ class MCAMaterials : protected Pointers {
 
  private:
   std::vector<double> columns;
+  // an error if the moduli the law forms from E and nu would overflow
+  void check_moduli(const MCAMaterial &) const;
 };
 
 }    // namespace LAMMPS_NS

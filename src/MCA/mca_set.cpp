@@ -27,7 +27,9 @@
 #include "memory.h"
 #include "variable.h"
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 using namespace LAMMPS_NS;
 using namespace MCAKernels;
@@ -62,9 +64,21 @@ const ScalarKeyword scalar_keywords[NSCALAR] = {
 std::string range_text(const ScalarKeyword &k)
 {
   if (k.hi < BIG) return fmt::format("in [{}, {}]", k.lo, k.hi);
-  if (k.lo <= -BIG) return "any number";
-  return fmt::format("{} {}", k.lo_inclusive ? ">=" : ">", k.lo);
+  if (k.lo <= -BIG) return fmt::format("in [{}, {}]", -BIG, BIG);
+  return fmt::format("{} {} and <= {}", k.lo_inclusive ? ">=" : ">", k.lo, BIG);
 }
+
+// the geometry and mass of an automaton, as mca_set leaves them
+struct Geometry {
+  int packing;
+  double radius, volume, mass, inertia;
+  bool valid() const
+  {
+    for (double v : {radius, volume, mass, inertia})
+      if (!(v > 0.0 && v <= std::numeric_limits<double>::max())) return false;
+    return true;
+  }
+};
 
 bool in_range(const ScalarKeyword &k, double value)
 {
@@ -182,32 +196,71 @@ void MCASet::command(int narg, char **arg)
                scalar_keywords[badall].name, range_text(scalar_keywords[badall]));
   }
 
+  // what an automaton becomes (nothing is changed here)
+  auto planned = [&](int i) {
+    Geometry g{avec->packing[i], atom->radius[i], avec->volume[i], atom->rmass[i],
+               avec->inertia[i]};
+    const double old_density = g.mass / g.volume;
+    if (new_packing >= 0) g.packing = new_packing;
+    if (values[RADIUS].given) g.radius = values[RADIUS].at(i);
+    if (values[DIAMETER].given) g.radius = 0.5 * values[DIAMETER].at(i);
+
+    if (values[VOLUME].given)
+      g.volume = values[VOLUME].at(i);
+    else if (geometry_changed)
+      g.volume = MCAKernels::cell_volume(g.packing, g.radius);
+
+    // a new volume without mass or density keeps the material density
+    if (values[MASS].given)
+      g.mass = values[MASS].at(i);
+    else if (values[DENSITY].given)
+      g.mass = values[DENSITY].at(i) * g.volume;
+    else if (volume_changed)
+      g.mass = old_density * g.volume;
+
+    if (values[INERTIA].given)
+      g.inertia = values[INERTIA].at(i);
+    else if (mass_changed)
+      g.inertia = MCAKernels::cell_inertia(g.packing, g.mass, g.radius);
+    return g;
+  };
+
+  // values that are each in range can still make a derived quantity
+  // overflow (the volume grows as radius^3): checked before any change
+  tagint bad_tag = 0;
+  double bad_values[4] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, bad_all[4];
+  for (int i = 0; i < nlocal && !bad_tag; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const Geometry g = planned(i);
+    if (g.valid()) continue;
+    bad_tag = atom->tag[i];
+    bad_values[0] = g.radius, bad_values[1] = g.volume, bad_values[2] = g.mass;
+    bad_values[3] = g.inertia;
+  }
+  tagint bad_tag_all;
+  MPI_Allreduce(&bad_tag, &bad_tag_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (bad_tag_all) {
+    if (bad_tag != bad_tag_all)
+      for (double &v : bad_values) v = -HUGE_VAL;
+    MPI_Allreduce(bad_values, bad_all, 4, MPI_DOUBLE, MPI_MAX, world);
+    for (auto &value : values) memory->destroy(value.per_atom);
+    error->all(FLERR,
+               "mca_set: automaton {} would get radius {}, cell volume {}, mass {} and moment of "
+               "inertia {}; each must be finite and > 0 (a value given is too large or too "
+               "small for the quantities derived from it)",
+               bad_tag_all, bad_all[0], bad_all[1], bad_all[2], bad_all[3]);
+  }
+
   int count = 0;
   for (int i = 0; i < nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
 
-    const double old_density = atom->rmass[i] / avec->volume[i];
-    if (new_packing >= 0) avec->packing[i] = new_packing;
-    if (values[RADIUS].given) atom->radius[i] = values[RADIUS].at(i);
-    if (values[DIAMETER].given) atom->radius[i] = 0.5 * values[DIAMETER].at(i);
-
-    if (values[VOLUME].given)
-      avec->volume[i] = values[VOLUME].at(i);
-    else if (geometry_changed)
-      avec->volume[i] = cell_volume(avec->packing[i], atom->radius[i]);
-
-    // a new volume without mass or density keeps the material density
-    if (values[MASS].given)
-      atom->rmass[i] = values[MASS].at(i);
-    else if (values[DENSITY].given)
-      atom->rmass[i] = values[DENSITY].at(i) * avec->volume[i];
-    else if (volume_changed)
-      atom->rmass[i] = old_density * avec->volume[i];
-
-    if (values[INERTIA].given)
-      avec->inertia[i] = values[INERTIA].at(i);
-    else if (mass_changed)
-      avec->derive_geometry(i, true, false);
+    const Geometry g = planned(i);
+    avec->packing[i] = g.packing;
+    atom->radius[i] = g.radius;
+    avec->volume[i] = g.volume;
+    atom->rmass[i] = g.mass;
+    avec->inertia[i] = g.inertia;
 
     if (values[SMEAN].given) avec->smean[i] = values[SMEAN].at(i);
     if (values[SEQ].given) avec->seq[i] = values[SEQ].at(i);

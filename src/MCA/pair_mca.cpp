@@ -44,6 +44,8 @@ using namespace MCAKernels;
 // restart files mark their layout with a negative first value (those of
 // earlier versions begin with the link tolerance, >= 0)
 static constexpr double RESTART_NAMED_MATERIALS = -2.0;
+// then the parts of the link model by name too
+static constexpr double RESTART_NAMED_PARTS = -3.0;
 
 PairMCA::HostData PairMCA::host_data()
 {
@@ -176,6 +178,24 @@ void PairMCA::settings(int narg, char **arg)
   select_parts(chosen);
 }
 
+// a viscosity without the damping part, or the part without a viscosity,
+// is most likely a mistake of the input: say so
+void PairMCA::check_damping()
+{
+  bool any_eta = false;
+  for (int t = 1; t <= atom->ntypes; t++) any_eta = any_eta || materials.type[t].viscosity > 0.0;
+  const bool damped = model.layout().link_offset[PART_DAMPING] >= 0;
+  if (comm->me != 0) return;
+  if (damped && !any_eta)
+    error->warning(FLERR,
+                   "Pair mca: damping viscous with eta = 0 for every atom type damps nothing "
+                   "(give eta in pair_coeff)");
+  if (!damped && any_eta)
+    error->warning(FLERR,
+                   "Pair mca: eta is given but the link model has no damping part: add "
+                   "'damping viscous' to pair_style mca to use it");
+}
+
 // the slot of the link law a keyword names, or nullptr
 const char *PairMCA::link_slot(const char *keyword)
 {
@@ -270,6 +290,7 @@ void PairMCA::init_style()
     error->all(FLERR, "Pair style mca requires an atom map (atom_modify map array or hash)");
 
   materials.check_all_set();
+  check_damping();
 
   // the internal fix that keeps the links, with the blocks of the model
   init_links();
@@ -607,10 +628,15 @@ void PairMCA::read_restart(FILE *fp)
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
-  fwrite(&RESTART_NAMED_MATERIALS, sizeof(double), 1, fp);
+  fwrite(&RESTART_NAMED_PARTS, sizeof(double), 1, fp);
   fwrite(&tolerance_default, sizeof(double), 1, fp);
   fwrite(&cutoff_user, sizeof(double), 1, fp);
   fwrite(&capacity_user, sizeof(int), 1, fp);
+  // the parts of the link model, by keyword
+  const std::string names = model.names();
+  const int len = names.size() + 1;
+  fwrite(&len, sizeof(int), 1, fp);
+  fwrite(names.c_str(), sizeof(char), len, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -620,7 +646,8 @@ void PairMCA::read_restart_settings(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  restart_named = (first == RESTART_NAMED_MATERIALS);
+  const bool named_parts = (first == RESTART_NAMED_PARTS);
+  restart_named = named_parts || (first == RESTART_NAMED_MATERIALS);
   if (!restart_named && first < 0.0)
     error->all(FLERR, "Restart file holds pair mca settings of an unknown layout ({})", first);
   tolerance_default = first;
@@ -633,6 +660,25 @@ void PairMCA::read_restart_settings(FILE *fp)
   MPI_Bcast(&tolerance_default, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&cutoff_user, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&capacity_user, 1, MPI_INT, 0, world);
+
+  // the link model: named in the file, else (earlier versions) elastic
+  std::vector<std::string> chosen;
+  if (named_parts) {
+    int len = 0;
+    if (comm->me == 0) utils::sfread(FLERR, &len, sizeof(int), 1, fp, nullptr, error);
+    MPI_Bcast(&len, 1, MPI_INT, 0, world);
+    std::vector<char> names(len);
+    if (comm->me == 0) utils::sfread(FLERR, names.data(), sizeof(char), len, fp, nullptr, error);
+    MPI_Bcast(names.data(), len, MPI_CHAR, 0, world);
+    chosen = utils::split_words(std::string(names.data()));
+    for (const auto &name : chosen)
+      if (link_part_id(name) < 0)
+        error->all(FLERR,
+                   "Restart file holds a pair mca link model with the part {}, which this "
+                   "version does not know",
+                   name);
+  }
+  select_parts(chosen);
 }
 
 /* ---------------------------------------------------------------------- */

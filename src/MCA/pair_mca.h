@@ -88,6 +88,7 @@ class PairMCA : public PairMCALinked {
   void set_masses();
   static const char *link_slot(const char *keyword);
   void select_parts(const std::vector<std::string> &chosen);
+  void check_damping();
 
   struct HostData;
   struct HostSums;

@@ -86,7 +86,8 @@ CASES = [
     ("mca_set no args", BOX + "mca_set all\n", r"mca_set"),
     ("mca_set group", BOX + "mca_set nogroup density 1\n", r"could not find group ID nogroup"),
     ("mca_set keyword", BOX + "mca_set all size 1.0\n", r"Unknown mca_set keyword size"),
-    ("mca_set radius 0", BOX + "mca_set all radius 0\n", r"mca_set radius must be > 0, got 0"),
+    ("mca_set radius 0", BOX + "mca_set all radius 0\n",
+     r"mca_set radius must be > 0 and <= 1e\+300, got 0"),
     ("mca_set radius <0", BOX + "mca_set all radius -0.1\n", r"mca_set radius must be > 0"),
     ("mca_set diameter", BOX + "mca_set all diameter 0.0\n", r"mca_set diameter must be > 0"),
     ("mca_set density", BOX + "mca_set all density -2700\n", r"mca_set density must be > 0"),
@@ -107,7 +108,15 @@ CASES = [
     ("mca_set variable style", BOX + "variable d equal 3\nmca_set all density v_d\n",
      r"variable d is not atom-style"),
     ("mca_set variable range", BOX + "variable d atom 1-id\nmca_set all density v_d\n",
-     r"mca_set density: atom-style variable gives a value outside the allowed range \(> 0\)"),
+     r"mca_set density: atom-style variable gives a value outside the allowed range "
+     r"\(> 0 and <= 1e\+300\)"),
+    # each value in range, but the cell volume (radius^3) overflows
+    ("mca_set radius range", BOX + "mca_set all radius 1e308\n",
+     r"mca_set radius must be > 0 and <= 1e\+300, got 1e308"),
+    ("mca_set radius overflow", BOX + "mca_set all radius 1e200\n",
+     r"mca_set: automaton \d+ would get radius 1e\+200, cell volume inf.*each must be finite"),
+    ("mca_set mass overflow", BOX + "mca_set all volume 1e300 density 1e300\n",
+     r"mca_set: automaton \d+ would get .* mass inf"),
     ("mca_set before box", "atom_style mca\nmca_set all density 1\n",
      r"mca_set command before simulation box is defined"),
     ("mca_set atom style", SPHERE_BOX + "mca_set all density 1\n",
@@ -129,6 +138,9 @@ CASES = [
      r"Poisson's ratio nu must be in \(-1, 0.5\)"),
     ("pair nu predictor", BOX + "pair_style mca\npair_coeff * * E 1e9 nu -0.3 rho 2700\n",
      r"nu = -0.3 is not supported: the mean-stress predictor needs nu > -0.25"),
+    # the law squares stresses of the order of 3K + 4G: E = 1e308 gave NaN
+    ("pair E overflow", BOX + "pair_style mca\npair_coeff * * E 1e308 nu 0.3 rho 2700\n",
+     r"Young's modulus E = 1e\+308 with nu = 0.3 is too large.*E must be < 3.3\d*e\+153"),
     ("pair rho", BOX + "pair_style mca\npair_coeff * * E 1e9 nu 0.3 rho 0\n",
      r"density rho must be > 0"),
     ("pair coeff keyword", BOX + "pair_style mca\npair_coeff * * E 1e9 G 1e9\n",
@@ -162,6 +174,8 @@ CASES = [
      r"Unknown compute mca/atom keyword stress"),
     ("compute atom style", SPHERE_BOX + "compute 1 all mca/atom smean\n",
      r"Compute mca/atom requires atom_style mca, not sphere"),
+    ("compute atom pair", BOX + "pair_style zero 1.0\npair_coeff * *\n"
+     "compute 1 all mca/atom smean\nrun 0\n", r"Compute mca/atom requires pair_style mca"),
     ("compute link keyword", PAIR_RUN + "compute 1 all mca/link length width\n",
      r"Unknown compute mca/link keyword width"),
     ("compute link pair", BOX + "pair_style zero 1.0\npair_coeff * *\n"
