@@ -76,6 +76,23 @@ namespace MCAKernels {
     omega[2] += dtfi * torque[2];
   }
 
+  // global damping of one automaton (fix mca/damping): forces proportional
+  // to its mass and moment of inertia, F -= gamma m v, T -= gamma_r J omega,
+  // so that every automaton's motion decays at the same rate whatever its
+  // size; returns the power the damping takes out (>= 0)
+  MCA_INLINE double global_damping(double gamma, double gamma_r, double mass, double inertia,
+                                   const double *v, const double *omega, double *f, double *torque)
+  {
+    const double cv = gamma * mass, cw = gamma_r * inertia;
+    double power = 0.0;
+    for (int k = 0; k < 3; k++) {
+      f[k] -= cv * v[k];
+      torque[k] -= cw * omega[k];
+      power += cv * v[k] * v[k] + cw * omega[k] * omega[k];
+    }
+    return power;
+  }
+
   // full-step drift of position and orientation
   MCA_INLINE void drift(double *x, double *q, const double *v, const double *omega, double dtv)
   {

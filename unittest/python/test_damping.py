@@ -1,5 +1,6 @@
-"""The viscous link damping of pair mca ("pair_style mca damping viscous",
-pair_coeff keyword eta; doc/src/pair_mca.rst, "Damping").
+"""Damping: the viscous link damping of pair mca ("pair_style mca damping
+viscous", pair_coeff keyword eta; doc/src/pair_mca.rst, "Damping") and the
+global damping of fix mca/damping (doc/src/fix_mca_damping.rst).
 
 * dashpot: two automata pulled apart at a prescribed relative velocity v:
   the damping adds exactly area * eta * v / r to the pair force at every
@@ -13,7 +14,10 @@ pair_coeff keyword eta; doc/src/pair_mca.rst, "Damping").
   across a restart file (the damping block travels with the links);
 * an elastic-only run is unchanged by the option's existence: a model
   without the damping part and eta = 0 give the same numbers as before
-  (bench/bitwise.py checks that bit for bit against the previous build).
+  (bench/bitwise.py checks that bit for bit against the previous build);
+* fix mca/damping: a lone automaton slows as exp(-gamma t), the energy it
+  takes out closes the balance (in econserve) with pair mca, kk runs the
+  same kernel, and the tally continues across a restart file.
 """
 
 import pathlib
@@ -286,9 +290,133 @@ def test_damping_example_at_reduced_size(build, tmp_path):
         pytest.skip("the example uses 'compute reduce ... inputs local' (LAMMPS 2022 on)")
     script = (ROOT / "examples" / "damping" / "in.damping").read_text()
     build.run(script, tmp_path, variables={"eta": "2e5", "n": 3, "nsteps": 1000})
-    t, ke, erot, pe, dissipated, total = np.loadtxt(tmp_path / "damping.2e5.dat", unpack=True)
+    t, ke, erot, pe, dissipated, total = np.loadtxt(tmp_path / "damping.2e5_0.dat", unpack=True)
     share = dissipated[-1] / total[0]
     error = np.abs(total - total[0]).max() / total[0]
     print(f"\nexample at n = 3: dissipated {share:.3f}, balance error {error:.2e}")
     assert share > 0.4
     assert error < 3e-3
+
+
+# ---------------------------------------------------------------------------
+# fix mca/damping: global damping F -= gamma m v, T -= gamma_r J omega
+
+SINGLE = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+region          box block -10 10 -10 10 -10 10 units box
+create_box      1 box
+create_atoms    1 single 0 0 0 units box
+mca_set         all packing fcc radius 0.254 density 2700
+velocity        all set 1.0 0.5 0 units box
+set             group all omega 0 0 2.0
+fix             nve all nve/mca
+fix             damp all mca/damping {gamma} angular {gamma_r}
+compute         p all property/atom inertia omegaz
+variable        erot atom 0.5*c_p[1]*c_p[2]^2
+compute         erot all reduce sum v_erot
+compute         ke all ke
+variable        vx equal vx[1]
+thermo_style    custom step c_ke c_erot f_damp v_vx
+thermo_modify   format float %.17g
+thermo          100
+timestep        1.0e-3
+run             1000
+"""
+
+
+def test_global_damping_of_a_free_automaton(build, tmp_path):
+    """A lone automaton slows as exp(-gamma t) (spin: exp(-gamma_r t)) to
+    the integrator's first-order error in gamma dt, and its kinetic energy
+    plus the dissipated energy stay constant."""
+    gamma, gamma_r = 1.0, 2.0
+    build.run(SINGLE.format(gamma=gamma, gamma_r=gamma_r), tmp_path)
+    step, ke, erot, dissipated, vx = thermo(tmp_path, 5).T
+    t = step * 1.0e-3
+    speed_error = np.abs(vx / vx[0] - np.exp(-gamma * t)).max()
+    spin = np.sqrt(erot / erot[0])
+    spin_error = np.abs(spin - np.exp(-gamma_r * t)).max()
+    total = ke + erot + dissipated
+    balance = np.abs(total - total[0]).max() / total[0]
+    print(f"\nfree automaton: |v/v0 - exp(-gamma t)| {speed_error:.2e}, spin {spin_error:.2e}, "
+          f"energy balance {balance:.2e}")
+    # gamma dt = 1e-3 (spin 2e-3): the half-step velocity the force uses
+    # lags by dt/2, an error of order gamma dt in the decay
+    assert speed_error < 1e-3 and spin_error < 2e-3
+    assert balance < 2e-3
+    assert dissipated[-1] > 0.5 * total[0]
+
+
+def test_global_damping_energy_in_econserve(build, tmp_path):
+    """With pair mca: kinetic + rotational + elastic + the fix's scalar
+    (ecouple) is conserved to the integrator's error, as with the links'
+    damping; kk runs the same kernel (bit for bit on one thread)."""
+    results = {}
+    modes = [("cpu", ())]
+    if build.name in ("kokkos", "kokkos5"):
+        modes.append(("kk", ("-k", "on", "t", "1", "-sf", "kk")))
+    for mode, args in modes:
+        d = tmp_path / mode
+        cube_data(build, d)
+        script = CUBE.format(eta=0.0, every=50, inputs=local_inputs(build), boundary="s s s")
+        script = script.replace("pair_style      mca damping viscous", "pair_style      mca")
+        script = script.replace(" eta 0.0", "")
+        script = script.replace("variable        etot equal ke+c_erot+pe+c_D",
+                                "fix             damp all mca/damping 50.0\n"
+                                "variable        etot equal ke+c_erot+pe+f_damp")
+        script = script.replace("thermo_style    custom step ke c_erot pe c_D v_etot",
+                                "thermo_style    custom step ke c_erot pe f_damp v_etot")
+        build.run(script + "run 2000\n", d, extra_args=args)
+        results[mode] = thermo(d, 6)
+    step, ke, erot, pe, dissipated, total = results["cpu"].T
+    error = np.abs(total - total[0]).max() / total[0]
+    share = dissipated[-1] / total[0]
+    print(f"\nglobal damping, cube: dissipated {share:.3f}, energy balance {error:.2e}")
+    assert share > 0.5
+    assert error < 2.5e-3    # the undamped cube: 2.1e-3 at this step
+    if "kk" in results:
+        assert np.abs(results["kk"] - results["cpu"]).max() <= 5e-13 * np.abs(results["cpu"]).max()
+
+
+@pytest.mark.parametrize("args,message", [
+    ("-1", r"Fix mca/damping: gamma must be >= 0 and finite \(1/time units\), got -1"),
+    ("1 angular -2", r"angular gamma_r must be >= 0 and finite"),
+    ("1 spin 2", r"Unknown fix mca/damping keyword spin \(allowed: angular\)"),
+    ("", r"fix mca/damping"),
+])
+def test_bad_global_damping_input(build, tmp_path, args, message):
+    script = SINGLE.format(gamma=1, gamma_r=1).replace(
+        "fix             damp all mca/damping 1 angular 1", f"fix damp all mca/damping {args}")
+    result = build.run(script, tmp_path, check=False, timeout=120)
+    output = result.stdout + result.stderr
+    assert 0 < result.returncode < 128, output[-2000:]
+    assert re.search("ERROR: .*" + message, output), output[-2000:]
+
+
+def test_global_damping_tally_continues_after_restart(build, tmp_path):
+    """The energy taken out is in the restart file: a run split by
+    write_restart/read_restart ends with the same tally as one split in
+    memory."""
+    script = SINGLE.format(gamma=1.0, gamma_r=2.0).replace("run             1000", "run 500")
+    build.run(script + "run 500\n", tmp_path / "memory")
+    build.run(script + "write_restart half.restart\n", tmp_path / "restart")
+    build.run("""
+read_restart    half.restart
+fix             nve all nve/mca
+fix             damp all mca/damping 1.0 angular 2.0
+compute         p all property/atom inertia omegaz
+variable        erot atom 0.5*c_p[1]*c_p[2]^2
+compute         erot all reduce sum v_erot
+compute         ke all ke
+variable        vx equal vx[1]
+thermo_style    custom step c_ke c_erot f_damp v_vx
+thermo_modify   format float %.17g
+thermo          100
+timestep        1.0e-3
+run             500
+""", tmp_path / "restart", name="in.continue")
+    memory, restart = thermo(tmp_path / "memory", 5)[-1], thermo(tmp_path / "restart", 5)[-1]
+    assert memory[0] == restart[0] == 1000
+    assert restart[3] > 0 and np.array_equal(memory, restart)
