@@ -106,9 +106,10 @@ def stress_vector(text):
 
 
 @pytest.mark.parametrize("newton", ["on", "off"])
-def test_pair_mca_kk_yaml(tmp_path, newton):
+@pytest.mark.parametrize("name", ["atomic-pair-mca", "atomic-pair-mca_damping"])
+def test_pair_mca_kk_yaml(tmp_path, newton, name):
     build = kokkos_build()
-    config = yaml.safe_load((TESTS / "atomic-pair-mca.yaml").read_text())
+    config = yaml.safe_load((TESTS / f"{name}.yaml").read_text())
     eps = float(config["epsilon"])
     result = build.run(pair_script(config, newton), tmp_path, extra_args=KOKKOS_ARGS)
     output = result.stdout
