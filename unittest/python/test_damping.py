@@ -27,6 +27,7 @@ import numpy as np
 import pytest
 
 from mca_inputs import lattice_data_file
+from mcatest import read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -67,17 +68,10 @@ def local_inputs(build):
     return "" if build.name == "kokkos" else " inputs local"
 
 
-def thermo(directory, ncols):
-    rows = []
-    for line in (directory / "log.lammps").read_text().splitlines():
-        fields = line.split()
-        if len(fields) != ncols or not re.match(r"^\d+$", fields[0]):
-            continue
-        try:
-            rows.append([float(v) for v in fields])
-        except ValueError:    # a line of text that happens to start with a number
-            continue
-    return np.array(rows)
+def thermo(directory):
+    """The thermo columns of the last run of directory/log.lammps, one row
+    per output step."""
+    return np.column_stack(list(read_thermo(directory / "log.lammps").values()))
 
 
 def test_dashpot_force_and_dissipation(build, tmp_path):
@@ -85,7 +79,7 @@ def test_dashpot_force_and_dissipation(build, tmp_path):
     build.run(PAIR.format(damping="damping viscous", eta=f"eta {ETA}", inputs=inputs),
               tmp_path / "damped")
     build.run(PAIR.format(damping="", eta="", inputs=inputs), tmp_path / "elastic")
-    damped, elastic = thermo(tmp_path / "damped", 5), thermo(tmp_path / "elastic", 5)
+    damped, elastic = thermo(tmp_path / "damped"), thermo(tmp_path / "elastic")
     assert len(damped) == 51 and len(elastic) == 51
     step, force, area, length, dissipated = damped.T
     # the positions are prescribed: the elastic force and the contact area
@@ -109,6 +103,19 @@ def test_dashpot_force_and_dissipation(build, tmp_path):
     assert np.abs(dissipated - work).max() < 1e-8 * work[-1]
 
 
+# kinetic (translation and spin) + elastic + dissipated energy in the thermo
+# output; {dissipated} is the energy taken out so far
+ENERGY_OUTPUT = """
+compute         L all mca/link dissipated
+compute         D all reduce sum c_L{inputs}
+compute         p all property/atom inertia omegax omegay omegaz
+variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
+compute         erot all reduce sum v_erot
+variable        etot equal ke+c_erot+pe+{dissipated}
+thermo_style    custom step ke c_erot pe {dissipated} v_etot
+thermo_modify   format float %.17g
+"""
+
 CUBE = """
 units           si
 atom_style      mca
@@ -116,23 +123,25 @@ atom_modify     map array
 boundary        {boundary}
 read_data       lattice.data
 comm_modify     vel yes
-pair_style      mca damping viscous
-pair_coeff      * * E 70e9 nu 0.3 rho 2700 eta {eta}
+pair_style      mca {damping}
+pair_coeff      * * E 70e9 nu 0.3 rho 2700 {eta}
 velocity        all ramp vx -0.5 0.5 z 0 1.5 sum yes units box
 velocity        all ramp vz -0.2 0.2 x 0 1.5 sum yes units box
 fix             nve all nve/mca
-""" + """
-compute         L all mca/link dissipated
-compute         D all reduce sum c_L{inputs}
-compute         p all property/atom inertia omegax omegay omegaz
-variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
-compute         erot all reduce sum v_erot
-variable        etot equal ke+c_erot+pe+c_D
-thermo_style    custom step ke c_erot pe c_D v_etot
-thermo_modify   format float %.17g
-thermo          {every}
-timestep        2.0e-5
+{fix}""" + ENERGY_OUTPUT + """thermo          {every}
+timestep        {dt}
 """
+
+
+def cube(build, eta=None, every=100, boundary="p p p", dt=2.0e-5, gamma=None):
+    """The input of the vibrating cube: link damping of viscosity eta, or
+    global damping at the rate gamma (fix mca/damping), or none."""
+    return CUBE.format(
+        boundary=boundary, every=every, dt=dt, inputs=local_inputs(build),
+        damping="damping viscous" if eta is not None else "",
+        eta=f"eta {eta}" if eta is not None else "",
+        fix=f"fix             damp all mca/damping {gamma}\n" if gamma is not None else "",
+        dissipated="f_damp" if gamma is not None else "c_D")
 
 
 def cube_data(build, directory):
@@ -152,10 +161,9 @@ def energy_balance(build, directory, eta, dt, nsteps):
     """Largest |E(t) - E(0)| / E(0) of E = kinetic + rotational + elastic +
     dissipated, and the dissipated and kinetic shares at the end."""
     cube_data(build, directory)
-    script = CUBE.format(eta=eta, every=nsteps // 40, inputs=local_inputs(build),
-                         boundary="s s s").replace("2.0e-5", str(dt))
+    script = cube(build, eta=eta, every=nsteps // 40, boundary="s s s", dt=dt)
     build.run(script + f"run {nsteps}\n", directory)
-    step, ke, erot, pe, dissipated, total = thermo(directory, 6).T
+    step, ke, erot, pe, dissipated, total = thermo(directory).T
     assert np.all(np.diff(dissipated) >= 0)
     return (np.abs(total - total[0]).max() / total[0], dissipated[-1] / total[0],
             (ke[-1] + erot[-1]) / total[0])
@@ -180,8 +188,7 @@ def test_energy_balance_of_a_damped_cube(build, tmp_path):
 def dump_of(build, directory, extra_args=(), nprocs=1, split=None):
     """The damped cube, 200 steps, per-automaton fields at the end."""
     cube_data(build, directory)
-    script = CUBE.format(eta=ETA_CUBE, every=100, inputs=local_inputs(build),
-                         boundary="p p p")
+    script = cube(build, eta=ETA_CUBE)
     if split == "restart":
         build.run(script + "run 100\nwrite_restart half.restart\n", directory,
                   extra_args=extra_args, nprocs=nprocs)
@@ -189,17 +196,10 @@ def dump_of(build, directory, extra_args=(), nprocs=1, split=None):
 read_restart    half.restart
 comm_modify     vel yes
 fix             nve all nve/mca
-compute         L all mca/link dissipated
-compute         D all reduce sum c_L{inputs}
-compute         p all property/atom inertia omegax omegay omegaz
-variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
-compute         erot all reduce sum v_erot
-variable        etot equal ke+c_erot+pe+c_D
-thermo_style    custom step ke c_erot pe c_D v_etot
-thermo_modify   format float %.17g
+""" + ENERGY_OUTPUT.format(inputs=local_inputs(build), dissipated="c_D") + """
 timestep        2.0e-5
 run             100
-""".replace("{inputs}", local_inputs(build))
+"""
     elif split == "memory":
         script += "run 100\nrun 100\n"
     else:
@@ -210,7 +210,7 @@ write_dump      all custom final.txt id x y z vx vy vz fx fy fz tqx tqy tqz &
 """
     build.run(script, directory, extra_args=extra_args, nprocs=nprocs, name="in.dump")
     data = np.loadtxt(directory / "final.txt", skiprows=9)
-    return data, thermo(directory, 6)[-1]
+    return data, thermo(directory)[-1]
 
 
 def relative_difference(a, b):
@@ -343,7 +343,7 @@ def test_global_damping_of_a_free_automaton(build, tmp_path):
     plus the dissipated energy stay constant."""
     gamma, gamma_r = 1.0, 2.0
     build.run(SINGLE.format(gamma=gamma, gamma_r=gamma_r), tmp_path)
-    step, ke, erot, dissipated, vx = thermo(tmp_path, 5).T
+    step, ke, erot, dissipated, vx = thermo(tmp_path).T
     t = step * 1.0e-3
     speed_error = np.abs(vx / vx[0] - np.exp(-gamma * t)).max()
     spin = np.sqrt(erot / erot[0])
@@ -370,16 +370,9 @@ def test_global_damping_energy_in_econserve(build, tmp_path):
     for mode, args in modes:
         d = tmp_path / mode
         cube_data(build, d)
-        script = CUBE.format(eta=0.0, every=50, inputs=local_inputs(build), boundary="s s s")
-        script = script.replace("pair_style      mca damping viscous", "pair_style      mca")
-        script = script.replace(" eta 0.0", "")
-        script = script.replace("variable        etot equal ke+c_erot+pe+c_D",
-                                "fix             damp all mca/damping 50.0\n"
-                                "variable        etot equal ke+c_erot+pe+f_damp")
-        script = script.replace("thermo_style    custom step ke c_erot pe c_D v_etot",
-                                "thermo_style    custom step ke c_erot pe f_damp v_etot")
+        script = cube(build, every=50, boundary="s s s", gamma=50.0)
         build.run(script + "run 2000\n", d, extra_args=args)
-        results[mode] = thermo(d, 6)
+        results[mode] = thermo(d)
     step, ke, erot, pe, dissipated, total = results["cpu"].T
     error = np.abs(total - total[0]).max() / total[0]
     share = dissipated[-1] / total[0]
@@ -412,21 +405,10 @@ def test_global_damping_tally_continues_after_restart(build, tmp_path):
     script = SINGLE.format(gamma=1.0, gamma_r=2.0).replace("run             1000", "run 500")
     build.run(script + "run 500\n", tmp_path / "memory")
     build.run(script + "write_restart half.restart\n", tmp_path / "restart")
-    build.run("""
-read_restart    half.restart
-fix             nve all nve/mca
-fix             damp all mca/damping 1.0 angular 2.0
-compute         p all property/atom inertia omegaz
-variable        erot atom 0.5*c_p[1]*c_p[2]^2
-compute         erot all reduce sum v_erot
-compute         ke all ke
-variable        vx equal vx[1]
-thermo_style    custom step c_ke c_erot f_damp v_vx
-thermo_modify   format float %.17g
-thermo          100
-timestep        1.0e-3
-run             500
-""", tmp_path / "restart", name="in.continue")
-    memory, restart = thermo(tmp_path / "memory", 5)[-1], thermo(tmp_path / "restart", 5)[-1]
+    # the continuation: the same fixes, output and steps after the restart
+    after_setup = script[script.index("fix             nve"):]
+    build.run("read_restart    half.restart\n" + after_setup, tmp_path / "restart",
+              name="in.continue")
+    memory, restart = thermo(tmp_path / "memory")[-1], thermo(tmp_path / "restart")[-1]
     assert memory[0] == restart[0] == 1000
     assert restart[3] > 0 and np.array_equal(memory, restart)
