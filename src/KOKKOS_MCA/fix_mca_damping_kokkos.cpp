@@ -59,7 +59,7 @@ template <class DeviceType> struct MCAGlobalDamping {
 
 template <class DeviceType>
 FixMCADampingKokkos<DeviceType>::FixMCADampingKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixMCADamping(lmp, narg, arg)
+    FixMCADamping(lmp, narg, arg), avecKK(nullptr)
 {
   MCAKokkos::require_kokkos(lmp, "Fix mca/damping/kk");
   kokkosable = 1;
@@ -69,14 +69,21 @@ FixMCADampingKokkos<DeviceType>::FixMCADampingKokkos(LAMMPS *lmp, int narg, char
   datamask_modify = EMPTY_MASK;
 }
 
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void FixMCADampingKokkos<DeviceType>::init()
+{
+  avecKK = dynamic_cast<AtomVecMCAKokkos *>(atom->avec);
+  if (!avecKK) error->all(FLERR, "Fix mca/damping/kk requires atom_style mca/kk");
+  FixMCADamping::init();
+}
+
 /* ----------------------------------------------------------------------
    as FixMCADamping::apply(), on the device
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> double FixMCADampingKokkos<DeviceType>::apply()
 {
-  auto avecKK = dynamic_cast<AtomVecMCAKokkos *>(atom->avec);
-  if (!avecKK) error->all(FLERR, "Fix mca/damping/kk requires atom_style mca/kk");
   atomKK->sync(execution_space,
                V_MASK | F_MASK | OMEGA_MASK | TORQUE_MASK | RMASS_MASK | MASK_MASK |
                    MCA_GEOMETRY_MASK);

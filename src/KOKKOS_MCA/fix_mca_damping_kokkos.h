@@ -31,12 +31,14 @@ namespace LAMMPS_NS {
 template <class DeviceType> class FixMCADampingKokkos : public FixMCADamping {
  public:
   FixMCADampingKokkos(class LAMMPS *, int, char **);
+  void init() override;
 
  protected:
   double apply() override;
 
  private:
   class AtomKokkos *atomKK;
+  class AtomVecMCAKokkos *avecKK;
 };
 
 }    // namespace LAMMPS_NS

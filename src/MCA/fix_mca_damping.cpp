@@ -34,7 +34,7 @@ using namespace FixConst;
 ------------------------------------------------------------------------- */
 
 FixMCADamping::FixMCADamping(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), gamma(0.0), gamma_r(0.0), dissipated(0.0), avec_fields(nullptr)
+    Fix(lmp, narg, arg), gamma(0.0), gamma_r(0.0), dissipated(0.0), avec(nullptr)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix mca/damping (needs gamma)", error);
   gamma = utils::numeric(FLERR, arg[3], false, lmp);
@@ -78,8 +78,8 @@ int FixMCADamping::setmask()
 
 void FixMCADamping::init()
 {
-  avec_fields = MCAAtomFields::find(atom);
-  if (!avec_fields) error->all(FLERR, "Fix mca/damping requires atom_style mca");
+  avec = MCAAtomFields::find(atom);
+  if (!avec) error->all(FLERR, "Fix mca/damping requires atom_style mca");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -104,7 +104,6 @@ void FixMCADamping::post_force(int /*vflag*/)
 
 double FixMCADamping::apply()
 {
-  auto avec = static_cast<MCAAtomFields *>(avec_fields);
   avec->sync_host();
   double **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
   const double *rmass = atom->rmass, *inertia = avec->inertia;

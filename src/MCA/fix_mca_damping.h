@@ -39,9 +39,9 @@ class FixMCADamping : public Fix {
   void restart(char *) override;
 
  protected:
-  double gamma, gamma_r;    // damping rates of translation and spin (1/time)
-  double dissipated;        // energy taken out on this rank (cumulative)
-  void *avec_fields;        // MCAAtomFields of atom_style mca
+  double gamma, gamma_r;        // damping rates of translation and spin (1/time)
+  double dissipated;            // energy taken out on this rank (cumulative)
+  class MCAAtomFields *avec;    // the fields of atom_style mca
   // the power taken out at this call; tallied times dt in a step of a run
   // (a setup applies the forces and tallies nothing)
   virtual double apply();
