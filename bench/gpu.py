@@ -29,9 +29,11 @@ MODES = {  # name: extra command-line arguments
 STEPS = {"cpu": {20: 100, 40: 20, 60: 10}, "kk_gpu": {20: 2000, 40: 1000, 60: 400}}
 
 
-def run_once(mode, n, steps, outdir):
-    log = os.path.join(outdir, f"log.gpu.{mode}.n{n}")
-    cmd = ["lmp", "-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
+def run_once(mode, n, steps, outdir, lmp="lmp", name=None):
+    """One run of the cube of edge n; the log is <outdir>/log.gpu.<name>.n<n>
+    (name: the mode unless given)."""
+    log = os.path.join(outdir, f"log.gpu.{name or mode}.n{n}")
+    cmd = [lmp, "-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
            "-var", "n", str(n), "-var", "nsteps", str(steps), "-log", log,
            "-screen", "none"] + MODES[mode]
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
