@@ -61,6 +61,8 @@ template <class DeviceType> PairMCAKokkos<DeviceType>::~PairMCAKokkos()
   memoryKK->destroy_kokkos(k_pred_stiffness, pred_stiffness);
   memoryKK->destroy_kokkos(k_dsmean, dsmean);
   memoryKK->destroy_kokkos(k_smean_pred, smean_pred);
+  memoryKK->destroy_kokkos(k_return_scale, return_scale);
+  memoryKK->destroy_kokkos(k_return_smean, return_smean);
   memoryKK->destroy_kokkos(k_partner_cache, partner_cache);
   memoryKK->destroy_kokkos(k_row_cache, row_cache);
   memoryKK->destroy_kokkos(k_eatom, eatom);
@@ -94,6 +96,8 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::init_style()
   // materials by type, on the device
   d_material =
       MCAKokkos::copy_to_device<DeviceType>(materials.type, atom->ntypes + 1, "pair:material");
+  d_hardening = MCAKokkos::copy_to_device<DeviceType>(materials.hardening, atom->ntypes + 1,
+                                                      "pair:hardening");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -108,6 +112,10 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
     memoryKK->create_kokkos(k_pred_stiffness, pred_stiffness, kk_nmax, "pair:pred_stiffness");
     memoryKK->create_kokkos(k_dsmean, dsmean, kk_nmax, "pair:dsmean");
     memoryKK->create_kokkos(k_smean_pred, smean_pred, kk_nmax, "pair:smean_pred");
+    memoryKK->destroy_kokkos(k_return_scale, return_scale);
+    memoryKK->destroy_kokkos(k_return_smean, return_smean);
+    memoryKK->create_kokkos(k_return_scale, return_scale, kk_nmax, "pair:return_scale");
+    memoryKK->create_kokkos(k_return_smean, return_smean, kk_nmax, "pair:return_smean");
     d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nmax);
     d_foreign = MCAKokkos::int_1d<DeviceType>("pair:foreign", kk_nmax);
     d_fabric = MCAKokkos::double_2d<DeviceType>("pair:fabric", kk_nmax, 6);
@@ -171,6 +179,11 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
   d.link_sums = d_link_sums;
   d.atom_tally = d_atom_tally;
   d.material = d_material;
+  d.hardening = d_hardening;
+  d.epsp = avecKK->k_epsp.template view<DeviceType>();
+  d.volume = avecKK->k_volume.template view<DeviceType>();
+  d.return_scale = k_return_scale.template view<DeviceType>();
+  d.return_smean = k_return_smean.template view<DeviceType>();
   if (eflag_atom) d.eatom = k_eatom.template view<DeviceType>();
   if (vflag_atom) d.vatom = k_vatom.template view<DeviceType>();
   d.nlocal = atom->nlocal;
@@ -181,16 +194,32 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
    forward communication of a stage's per-atom values, device or host
 ------------------------------------------------------------------------- */
 
+template <class DeviceType>
+void PairMCAKokkos<DeviceType>::stage_views(int stage, MCAKokkos::dual_double_1d *&a,
+                                            MCAKokkos::dual_double_1d *&b)
+{
+  if (stage == STAGE_COUNT) {
+    a = &k_pred_stiffness;
+    b = nullptr;
+  } else if (stage == STAGE_RETURN) {
+    a = &k_return_scale;
+    b = &k_return_smean;
+  } else {
+    a = &k_dsmean;
+    b = &k_smean_pred;
+  }
+}
+
 template <class DeviceType> void PairMCAKokkos<DeviceType>::forward_comm_stage(int stage)
 {
   comm_stage = stage;
-  k_pred_stiffness.template modify<DeviceType>();
-  k_dsmean.template modify<DeviceType>();
-  k_smean_pred.template modify<DeviceType>();
+  MCAKokkos::dual_double_1d *a, *b;
+  stage_views(stage, a, b);
+  a->template modify<DeviceType>();
+  if (b) b->template modify<DeviceType>();
   MCACompat::forward_comm(comm, this);
-  k_pred_stiffness.template sync<DeviceType>();
-  k_dsmean.template sync<DeviceType>();
-  k_smean_pred.template sync<DeviceType>();
+  a->template sync<DeviceType>();
+  if (b) b->template sync<DeviceType>();
 }
 
 template <class DeviceType>
@@ -198,11 +227,12 @@ int PairMCAKokkos<DeviceType>::pack_forward_comm_kokkos(MCA_KK_PACK_FORWARD_ARGS
 {
   (void) pbc_flag;
   (void) pbc;
+  MCAKokkos::dual_double_1d *a, *b;
+  stage_views(comm_stage, a, b);
   MCAPackForward<DeviceType> pack;
-  pack.stride = (comm_stage == STAGE_COUNT) ? 1 : 2;
-  pack.a = (comm_stage == STAGE_COUNT) ? k_pred_stiffness.template view<DeviceType>()
-                                       : k_dsmean.template view<DeviceType>();
-  pack.b = k_smean_pred.template view<DeviceType>();
+  pack.stride = b ? 2 : 1;
+  pack.a = a->template view<DeviceType>();
+  if (b) pack.b = b->template view<DeviceType>();
   pack.list = k_sendlist.template view<DeviceType>();
   pack.buf = k_buf.template view<DeviceType>();
 #ifdef MCA_HAVE_KK_FLOAT
@@ -218,11 +248,12 @@ template <class DeviceType>
 void PairMCAKokkos<DeviceType>::unpack_forward_comm_kokkos(int n, int first,
                                                            MCA_KK_COMM_BUFFER &k_buf)
 {
+  MCAKokkos::dual_double_1d *a, *b;
+  stage_views(comm_stage, a, b);
   MCAUnpackForward<DeviceType> unpack;
-  unpack.stride = (comm_stage == STAGE_COUNT) ? 1 : 2;
-  unpack.a = (comm_stage == STAGE_COUNT) ? k_pred_stiffness.template view<DeviceType>()
-                                         : k_dsmean.template view<DeviceType>();
-  unpack.b = k_smean_pred.template view<DeviceType>();
+  unpack.stride = b ? 2 : 1;
+  unpack.a = a->template view<DeviceType>();
+  if (b) unpack.b = b->template view<DeviceType>();
   unpack.buf = k_buf.template view<DeviceType>();
   unpack.first = first;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, n), unpack);
@@ -232,22 +263,23 @@ template <class DeviceType>
 int PairMCAKokkos<DeviceType>::pack_forward_comm(int n, int *list, double *buf, int pbc_flag,
                                                  int *pbc)
 {
-  k_pred_stiffness.sync_host();
-  k_dsmean.sync_host();
-  k_smean_pred.sync_host();
+  MCAKokkos::dual_double_1d *a, *b;
+  stage_views(comm_stage, a, b);
+  a->sync_host();
+  if (b) b->sync_host();
   return PairMCA::pack_forward_comm(n, list, buf, pbc_flag, pbc);
 }
 
 template <class DeviceType>
 void PairMCAKokkos<DeviceType>::unpack_forward_comm(int n, int first, double *buf)
 {
-  k_pred_stiffness.sync_host();
-  k_dsmean.sync_host();
-  k_smean_pred.sync_host();
+  MCAKokkos::dual_double_1d *a, *b;
+  stage_views(comm_stage, a, b);
+  a->sync_host();
+  if (b) b->sync_host();
   PairMCA::unpack_forward_comm(n, first, buf);
-  k_pred_stiffness.modify_host();
-  k_dsmean.modify_host();
-  k_smean_pred.modify_host();
+  a->modify_host();
+  if (b) b->modify_host();
 }
 
 /* ----------------------------------------------------------------------
@@ -342,6 +374,76 @@ void PairMCAKokkos<DeviceType>::link_pass(Pass &pass, bool commit, bool lazy, MC
   }
 }
 
+/* ----------------------------------------------------------------------
+   the link pass with its sums (Plastic: the corrected links of a model
+   with plasticity)
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+template <bool Plastic>
+void PairMCAKokkos<DeviceType>::link_passes(bool commit, bool lazy, MCALinkSums &sums)
+{
+  const bool atom_tally = eflag_atom || vflag_atom;
+  const MCAPairViews<DeviceType> d = views();
+  if (need_dup()) {
+    if (atom_tally) dup_tally.reset();
+    MCALinkPass<DeviceType, MCAChunkSums<DeviceType>, dup_type, Plastic> pass;
+    pass.d = d;
+    pass.sums.sums = d_link_sums;
+    pass.sums.copies = d_link_copies;
+    pass.sums.chunk_size = chunk_size;
+    pass.tally.tally = dup_tally;
+    link_pass(pass, commit, lazy, sums);
+    if (atom_tally) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
+  } else {
+    MCALinkPass<DeviceType, MCADirectSums<DeviceType>, direct_type, Plastic> pass;
+    pass.d = d;
+    pass.sums.sums = direct_type(d_link_sums);
+    pass.tally.tally = direct_type(d_atom_tally);
+    link_pass(pass, commit, lazy, sums);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   plasticity: the elastic trial of the links, the return of each
+   automaton from its trial stress, sent to the ghosts (see
+   PairMCA::compute())
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool commit)
+{
+  const int nlocal = atom->nlocal;
+  const MCAPairViews<DeviceType> d = views();
+  MCALinkPassFlags flags;
+  flags.commit = commit;
+  flags.eager = false;
+  flags.dt = commit ? update->dt : 0.0;
+  flags.cutsq = cut_global * cut_global;
+  if (need_dup()) {
+    MCAChunkedFor<MCATrialPass<DeviceType, MCAChunkSums<DeviceType>>> chunked;
+    chunked.pass.d = d;
+    chunked.pass.sums.sums = d_link_sums;
+    chunked.pass.sums.copies = d_link_copies;
+    chunked.pass.sums.chunk_size = chunk_size;
+    chunked.pass.flags = flags;
+    chunked.nlocal = nlocal;
+    chunked.chunk_size = chunk_size;
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, chunks()), chunked);
+  } else {
+    MCATrialPass<DeviceType, MCADirectSums<DeviceType>> trial;
+    trial.d = d;
+    trial.sums.sums = direct_type(d_link_sums);
+    trial.flags = flags;
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), trial);
+  }
+  MCAPlasticReturnPass<DeviceType> ret;
+  ret.d = d;
+  if (need_dup()) ret.copies = d_link_copies;
+  ret.commit = commit;
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), ret);
+  forward_comm_stage(STAGE_RETURN);
+}
+
 /* ---------------------------------------------------------------------- */
 
 template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, int vflag)
@@ -388,22 +490,12 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   if (atom_tally) Kokkos::deep_copy(d_atom_tally, 0.0);
   const MCAPairViews<DeviceType> d = views();
   MCALinkSums sums;
-  if (need_dup()) {
-    if (atom_tally) dup_tally.reset();
-    MCALinkPass<DeviceType, MCAChunkSums<DeviceType>, dup_type> pass;
-    pass.d = d;
-    pass.sums.sums = d_link_sums;
-    pass.sums.copies = d_link_copies;
-    pass.sums.chunk_size = chunk_size;
-    pass.tally.tally = dup_tally;
-    link_pass(pass, commit, lazy, sums);
-    if (atom_tally) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
+  if (plastic()) {
+    // (a setup returns no automaton: see PairMCA::compute())
+    if (commit) plastic_return(commit);
+    link_passes<true>(commit, lazy, sums);
   } else {
-    MCALinkPass<DeviceType, MCADirectSums<DeviceType>, direct_type> pass;
-    pass.d = d;
-    pass.sums.sums = direct_type(d_link_sums);
-    pass.tally.tally = direct_type(d_atom_tally);
-    link_pass(pass, commit, lazy, sums);
+    link_passes<false>(commit, lazy, sums);
   }
 
   MCALinkFinish<DeviceType> finish;
@@ -453,13 +545,13 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::sync_link_rows()
 template <class DeviceType> double PairMCAKokkos<DeviceType>::memory_usage()
 {
   double bytes = PairMCA::memory_usage();
-  // per automaton: 3 communicated values, fabric, the sums of both passes
+  // per automaton: 5 communicated values, fabric, the sums of both passes
   // and their copies (one per thread on the host), link count and flag
   typedef typename DeviceType::memory_space memory_space;
   const double copies = Kokkos::SpaceAccessibility<Kokkos::HostSpace, memory_space>::accessible
       ? typename DeviceType::execution_space().concurrency()
       : 0.0;
-  bytes += (3.0 + 6.0 + (1.0 + (need_dup() ? copies : 0.0)) * (PS_SIZE + LS_SIZE)) * kk_nmax *
+  bytes += (5.0 + 6.0 + (1.0 + (need_dup() ? copies : 0.0)) * (PS_SIZE + LS_SIZE)) * kk_nmax *
           sizeof(double) +
       2.0 * kk_nmax * sizeof(int);
   return bytes;

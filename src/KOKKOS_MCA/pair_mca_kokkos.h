@@ -98,6 +98,9 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
 
   // per automaton (local + ghost): predictor values sent to the ghosts
   MCAKokkos::dual_double_1d k_pred_stiffness, k_dsmean, k_smean_pred;
+  // plasticity: the return of each automaton, sent to the ghosts
+  MCAKokkos::dual_double_1d k_return_scale, k_return_smean;
+  Kokkos::View<MCAKernels::MCAHardening *, DeviceType> d_hardening;
   // per local automaton: link count, fabric tensor, and the sums of the
   // predictor, of the link pass and of the per-atom energy and virial
   typedef typename MCAScatter<DeviceType>::direct direct_type;
@@ -112,6 +115,10 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   bool need_dup() const;
   int chunks() const;
   template <class Pass> void link_pass(Pass &, bool commit, bool lazy, struct MCALinkSums &);
+  template <bool Plastic> void link_passes(bool commit, bool lazy, struct MCALinkSums &);
+  void plastic_return(bool commit);
+  // the two per-atom values a stage communicates
+  void stage_views(int stage, MCAKokkos::dual_double_1d *&a, MCAKokkos::dual_double_1d *&b);
   // the caches of the base class, in DualViews
   MCAKokkos::dual_int_2d k_partner_cache, k_row_cache;
   // materials by type

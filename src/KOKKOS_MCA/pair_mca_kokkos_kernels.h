@@ -60,6 +60,10 @@ template <class DeviceType> struct MCAPairViews {
   MCALinkLayout layout;
 
   double_1d pred_stiffness, dsmean, smean_pred;
+  // plasticity: hardening curves by type, plastic strain and cell volume
+  // of the automata, their return factor and trial mean stress
+  Kokkos::View<MCAHardening *, DeviceType> hardening;
+  double_1d epsp, volume, return_scale, return_smean;
   int_1d link_count, foreign;
   double_2d fabric, predictor_sums, link_sums, atom_tally;
   Kokkos::View<MCAMaterial *, DeviceType> material;
@@ -354,7 +358,7 @@ template <class TallyScatter> struct MCAKokkosTally {
    to both local automata
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, class Sums, class TallyScatter> struct MCALinkPass {
+template <class DeviceType, class Sums, class TallyScatter, bool Plastic> struct MCALinkPass {
   typedef DeviceType device_type;
   typedef MCALinkSums value_type;
   MCAPairViews<DeviceType> d;
@@ -364,7 +368,36 @@ template <class DeviceType, class Sums, class TallyScatter> struct MCALinkPass {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i, MCALinkSums &ev) const
   {
-    link_pass_of(d, sums, tally, flags, i, ev);
+    link_pass_of<Plastic>(d, sums, tally, flags, i, ev);
+  }
+};
+
+/* ----------------------------------------------------------------------
+   kernels of a model with plasticity: the elastic trial of the links
+   (their traction moment B in the LS_BMAT columns of the link sums),
+   then the return of each automaton from its trial stress
+------------------------------------------------------------------------- */
+
+template <class DeviceType, class Sums> struct MCATrialPass {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  Sums sums;
+  MCALinkPassFlags flags;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { trial_pass_of(d, sums, flags, i); }
+};
+
+template <class DeviceType> struct MCAPlasticReturnPass {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  MCAKokkos::double_3d<DeviceType> copies;
+  bool commit;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    double sums[LS_SIZE];
+    load_sums(d.link_sums, copies, d.foreign, i, sums);
+    plastic_return_of(d, i, sums + LS_BMAT, commit);
   }
 };
 

@@ -20,7 +20,7 @@
 #include "error.h"
 #include "fix_mca_links.h"
 #include "mca_compat.h"
-#include "mca_link_layout.h"
+#include "mca_link_law.h"
 #include "memory.h"
 #include "update.h"
 
@@ -29,9 +29,9 @@
 using namespace LAMMPS_NS;
 
 namespace {
-enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, SMEAN, SEQ, EEQ, LINKS, NKEYWORD };
-const char *const keywords[NKEYWORD] = {"sxx", "syy",   "szz", "sxy", "sxz",
-                                        "syz", "smean", "seq", "eeq", "links"};
+enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, SMEAN, SEQ, EEQ, LINKS, EPSP, PLASTIC_WORK, NKEYWORD };
+const char *const keywords[NKEYWORD] = {"sxx",   "syy", "szz", "sxy",   "sxz",  "syz",
+                                        "smean", "seq", "eeq", "links", "epsp", "plastic_work"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -48,7 +48,7 @@ ComputeMCAAtom::ComputeMCAAtom(LAMMPS *lmp, int narg, char **arg) :
     if (k == NKEYWORD)
       error->all(FLERR,
                  "Unknown compute mca/atom keyword {} (allowed: sxx syy szz sxy sxz syz "
-                 "smean seq eeq links)",
+                 "smean seq eeq links epsp plastic_work)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -91,6 +91,11 @@ double ComputeMCAAtom::value(int i, int w)
   if (w == SMEAN) return avec->smean[i];
   if (w == SEQ) return avec->seq[i];
   if (w == EEQ) return avec->eeq[i];
+  if (w == EPSP) return avec->epsp[i];
+  if (w == PLASTIC_WORK) {
+    const int offset = links->model.layout().atom_offset[MCAKernels::PART_PLASTICITY];
+    return offset >= 0 ? links->atom_state[i][offset + MCAKernels::PA_WORK] : 0.0;
+  }
   // links: linked partners of the automaton
   int n = 0;
   for (int m = 0; m < links->nlinks[i]; m++)
@@ -118,6 +123,9 @@ void ComputeMCAAtom::compute_peratom()
     }
   }
 
+  // the values of the last force evaluation (on a device for kk styles)
+  avec->sync_host();
+  links->to_host();
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++) {

@@ -33,9 +33,24 @@ using namespace LAMMPS_NS;
 using namespace MCAKernels;
 
 namespace {
-enum { ID1, ID2, STATE, LENGTH, STRAIN, NORMAL, SHEAR, AREA, FORCE, ENERGY, DISSIPATED, NKEYWORD };
-const char *const keywords[NKEYWORD] = {"id1",   "id2",  "state", "length", "strain",    "normal",
-                                        "shear", "area", "force", "energy", "dissipated"};
+enum {
+  ID1,
+  ID2,
+  STATE,
+  LENGTH,
+  STRAIN,
+  NORMAL,
+  SHEAR,
+  AREA,
+  FORCE,
+  ENERGY,
+  DISSIPATED,
+  PLASTIC_WORK,
+  NKEYWORD
+};
+const char *const keywords[NKEYWORD] = {"id1",    "id2",    "state",      "length",
+                                        "strain", "normal", "shear",      "area",
+                                        "force",  "energy", "dissipated", "plastic_work"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -53,7 +68,7 @@ ComputeMCALink::ComputeMCALink(LAMMPS *lmp, int narg, char **arg) :
     if (k == NKEYWORD)
       error->all(FLERR,
                  "Unknown compute mca/link keyword {} (allowed: id1 id2 state length "
-                 "strain normal shear area force energy dissipated)",
+                 "strain normal shear area force energy dissipated plastic_work)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -125,6 +140,9 @@ void ComputeMCALink::compute_local()
   const int ncols = MAX(size_local_cols, 1);
   // the damping block, if the link model has one
   const int damping = links->model.layout().link_offset[PART_DAMPING];
+  // and the plasticity block: the elastic energy is the work of the link
+  // forces less the plastic work
+  const int plasticity = links->model.layout().link_offset[PART_PLASTICITY];
   int row = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
@@ -147,6 +165,7 @@ void ComputeMCALink::compute_local()
       const double tau = sqrt(dot3(t, t));
       const double area = h[H_APREV];
       const double dissipated = damping >= 0 ? h[damping + D_WORK] : 0.0;
+      const double plastic_work = plasticity >= 0 ? h[plasticity + P_WORK] : 0.0;
       for (int c = 0; c < ncols; c++) {
         double value = 0.0;
         switch (which[c]) {
@@ -178,10 +197,13 @@ void ComputeMCALink::compute_local()
             value = area * sqrt(sig * sig + tau * tau);
             break;
           case ENERGY:
-            value = h[H_WORK];
+            value = h[H_WORK] - plastic_work;
             break;
           case DISSIPATED:
             value = dissipated;
+            break;
+          case PLASTIC_WORK:
+            value = plastic_work;
             break;
         }
         if (size_local_cols == 0)

@@ -177,7 +177,7 @@ namespace MCAKernels {
 
   // cosine and sine; the twist per step is tiny, where a series is exact
   // to round-off (the first term left out is phi^6/720 < 2e-21)
-  MCA_INLINE void cos_sin(double phi, double &c, double &s)
+  MCA_FORCE_INLINE void cos_sin(double phi, double &c, double &s)
   {
     if (fabs(phi) < 1.0e-3) {
       const double p2 = phi * phi;
@@ -189,8 +189,8 @@ namespace MCAKernels {
     }
   }
 
-  MCA_INLINE void pair_rotation(const double *a, const double *b, double cos_phi, double sin_phi,
-                                double *rot)
+  MCA_FORCE_INLINE void pair_rotation(const double *a, const double *b, double cos_phi,
+                                      double sin_phi, double *rot)
   {
     // minimal rotation a -> b: R v = c v + k x v + k (k.v)/(1 + c), k = a x b
     double k[3];
@@ -220,7 +220,8 @@ namespace MCAKernels {
             tw[3 * r] * rmin[q] + tw[3 * r + 1] * rmin[3 + q] + tw[3 * r + 2] * rmin[6 + q];
   }
 
-  MCA_INLINE void rotate_with_pair(double *v, const double *rot, const double *b, bool tangential)
+  MCA_FORCE_INLINE void rotate_with_pair(double *v, const double *rot, const double *b,
+                                         bool tangential)
   {
     double r[3];
     for (int m = 0; m < 3; m++)

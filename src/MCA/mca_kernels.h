@@ -22,6 +22,7 @@
      mca_material.h      the material record of an atom type
      mca_link_layout.h   blocks of a link row and of the automaton state
      mca_mean_stress.h   mean-stress predictor and automaton stress
+     mca_plasticity.h    hardening curves, radial return, plastic correction
      mca_link_law.h      the link law, step by step
      mca_link_passes.h   the passes over the links, for both dispatchers
 ------------------------------------------------------------------------- */
@@ -36,6 +37,7 @@
 #include "mca_link_passes.h"
 #include "mca_material.h"
 #include "mca_mean_stress.h"
+#include "mca_plasticity.h"
 #include "mca_prescribe.h"
 
 #endif

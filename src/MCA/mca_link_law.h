@@ -21,6 +21,7 @@
 #include "mca_geometry.h"
 #include "mca_link_layout.h"
 #include "mca_material.h"
+#include "mca_plasticity.h"
 
 #include <cmath>
 #include <string>
@@ -63,9 +64,9 @@ namespace MCAKernels {
        w_i, w_j       angular velocities over the step (spin increments w dt)
   ------------------------------------------------------------------------- */
 
-  MCA_INLINE void contact_slip(const double *n, const double *n_old, const double *del,
-                               const double *del_old, double q_i, double q_j, const double *w_i,
-                               const double *w_j, double dt, double *dl)
+  MCA_FORCE_INLINE void contact_slip(const double *n, const double *n_old, const double *del,
+                                     const double *del_old, double q_i, double q_j,
+                                     const double *w_i, const double *w_j, double dt, double *dl)
   {
     double nm[3] = {n[0] + n_old[0], n[1] + n_old[1], n[2] + n_old[2]};
     const double len = sqrt(dot3(nm, nm));
@@ -112,12 +113,20 @@ namespace MCAKernels {
      its kernel in the link step below and its doc (Developer_mca.rst)
   ------------------------------------------------------------------------- */
 
-  enum LinkPart { PART_ELASTIC = 0, PART_DAMPING, NPARTS };
+  enum LinkPart { PART_ELASTIC = 0, PART_DAMPING, PART_PLASTICITY, NPARTS };
 
   // the block of the damping part in a link row: the damping force on lo
   // of the last step (normal, tangential) and the energy the link's
   // dampers dissipated
   enum DampingSlot { D_FN = 0, D_FT, D_WORK = D_FT + 3, D_SIZE };
+
+  // the block of the plasticity part in a link row: the part of this
+  // step's elastic work that the tractions of the last step did (the
+  // trial pass computes it before the correction changes them), and the
+  // plastic work of the link; per automaton: its plastic work (its
+  // plastic strain is the atom style's epsp)
+  enum PlasticitySlot { P_WORK_OLD = 0, P_WORK, P_SIZE };
+  enum PlasticityAtomSlot { PA_WORK = 0, PA_SIZE };
   static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");
 
   struct MCALinkPartInfo {
@@ -131,6 +140,7 @@ namespace MCAKernels {
   constexpr MCALinkPartInfo MCA_LINK_PARTS[] = {
       {"elastic", "elastic", PART_ELASTIC, H_SIZE, A_SIZE, true},
       {"damping", "viscous", PART_DAMPING, D_SIZE, 0, false},
+      {"plasticity", "mises", PART_PLASTICITY, P_SIZE, PA_SIZE, false},
   };
   constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
   static_assert(MCA_LINK_PARTS[PART_ELASTIC].part == PART_ELASTIC,
@@ -151,12 +161,15 @@ namespace MCAKernels {
        normal_traction    elastic trial of the normal tractions (Newton-3 split)
        shear_traction     carry shear tractions and couples with the pair,
                           elastic trial of the shear tractions
-       link_forces        contact area, force, bending and torsion, torques
+       link_area          contact area
+       link_force         pair force from the mean tractions of the halves
+       link_couple        bending and torsion increments of the halves
+       link_torques       couple of the pair, torques
        link_damping       (damping viscous) dashpot force and torques, the
                           energy it dissipated
        link_work          elastic work of the step; the row is committed
-     The inelastic parts of the link model (plastic return on the trial
-     tractions, break check) act between the trial and link_forces; see
+     (the order of the elastic law before the plasticity part: the same
+     instructions).  Plasticity takes the step in two passes, below; see
      doc/src/Developer_mca.rst.
   ------------------------------------------------------------------------- */
 
@@ -195,8 +208,9 @@ namespace MCAKernels {
     double sig_old, t_old[3], c_old[3];    // tractions and couple of the last step
   };
 
-  MCA_INLINE void link_motion(const double *hist, const MCALinkEnds &e, MCALinkForces &out,
-                              MCALinkMotion &mo)
+  // the kinematics of the step (not the tractions of the last step)
+  MCA_INLINE void link_kinematics(const double *hist, const MCALinkEnds &e, MCALinkForces &out,
+                                  MCALinkMotion &mo)
   {
     for (int m = 0; m < 3; m++) mo.del[m] = e.x_hi[m] - e.x_lo[m];
     out.r = sqrt(dot3(mo.del, mo.del));
@@ -204,6 +218,12 @@ namespace MCAKernels {
     for (int m = 0; m < 3; m++) out.n[m] = mo.del[m] * rinv;
     mo.dr = out.r - hist[H_RPREV];
     for (int m = 0; m < 3; m++) mo.dth[m] = e.dt * (e.w_hi[m] - e.w_lo[m]);
+  }
+
+  MCA_INLINE void link_motion(const double *hist, const MCALinkEnds &e, MCALinkForces &out,
+                              MCALinkMotion &mo)
+  {
+    link_kinematics(hist, e, out, mo);
     const double *lo = hist + H_LO, *hi = hist + H_HI;
     mo.sig_old = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
     for (int m = 0; m < 3; m++) {
@@ -230,8 +250,18 @@ namespace MCAKernels {
     mo.q_hi = q0_hi * (1.0 + hi[HALF_EPS]);
   }
 
-  MCA_INLINE void shear_traction(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
-                                 const MCAMaterial &m_hi, const double *n, MCALinkMotion &mo)
+  // the slip of the contact points over the step (mo.q_lo, mo.q_hi set)
+  MCA_FORCE_INLINE void link_slip(const double *hist, const MCALinkEnds &e, const double *n,
+                                  MCALinkMotion &mo)
+  {
+    const double *n_old = hist + H_NPREV;
+    const double rprev = hist[H_RPREV];
+    const double del_old[3] = {rprev * n_old[0], rprev * n_old[1], rprev * n_old[2]};
+    contact_slip(n, n_old, mo.del, del_old, mo.q_lo, mo.q_hi, e.w_lo, e.w_hi, e.dt, mo.dl);
+  }
+
+  MCA_FORCE_INLINE void shear_traction(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                                       const MCAMaterial &m_hi, const double *n, MCALinkMotion &mo)
   {
     double *lo = hist + H_LO;
     double *hi = hist + H_HI;
@@ -250,9 +280,7 @@ namespace MCAKernels {
 
     // shear tractions
     double dg_lo[3], dg_hi[3];
-    const double rprev = hist[H_RPREV];
-    const double del_old[3] = {rprev * n_old[0], rprev * n_old[1], rprev * n_old[2]};
-    contact_slip(n, n_old, mo.del, del_old, mo.q_lo, mo.q_hi, e.w_lo, e.w_hi, e.dt, mo.dl);
+    link_slip(hist, e, n, mo);
     split_shear_strain(lo + HALF_T, hi + HALF_T, m_lo.shear, m_hi.shear, mo.q_lo, mo.q_hi, mo.dl,
                        dg_lo, dg_hi);
     for (int m = 0; m < 3; m++) {
@@ -261,24 +289,36 @@ namespace MCAKernels {
     }
   }
 
-  MCA_INLINE void link_forces(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
-                              const MCAMaterial &m_hi, const MCALinkMotion &mo, MCALinkForces &out)
+  // contact area of the step (thesis 3.65)
+  MCA_INLINE void link_area(const double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                            const MCAMaterial &m_hi, MCALinkForces &out)
   {
-    double *lo = hist + H_LO;
-    double *hi = hist + H_HI;
-    const double *n = out.n;
-
-    // contact area and pair force on lo
     out.area = contact_area(hist[H_A0], hist[H_R0], out.r, e.sm_lo, m_lo.bulk, e.sm_hi, m_hi.bulk);
+  }
+
+  // the pair force on lo from the mean tractions of the two halves
+  MCA_INLINE void link_force(const double *hist, MCALinkForces &out)
+  {
+    const double *lo = hist + H_LO;
+    const double *hi = hist + H_HI;
+    const double *n = out.n;
     out.sig = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
     for (int m = 0; m < 3; m++) {
       out.t[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
       out.f[m] = out.area * (out.sig * n[m] + out.t[m]);
     }
+  }
 
-    // bending and torsion: the faces act as two elastic layers of
-    // thickness q_lo, q_hi in series; the relative rotation splits into
-    // twist (along n) and bending (normal to n)
+  // the couple increments of the step in both halves: the faces act as
+  // two elastic layers of thickness q_lo, q_hi in series; the relative
+  // rotation splits into twist (along n) and bending (normal to n)
+  MCA_INLINE void link_couple(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                              const MCAMaterial &m_hi, const MCALinkMotion &mo,
+                              const MCALinkForces &out)
+  {
+    double *lo = hist + H_LO;
+    double *hi = hist + H_HI;
+    const double *n = out.n;
     const double compliance = mo.q_lo / (2.0 * m_lo.shear) + mo.q_hi / (2.0 * m_hi.shear);
     const double kbend = e.chi * out.area * out.area / compliance;
     const double twist = dot3(mo.dth, n);
@@ -289,16 +329,22 @@ namespace MCAKernels {
       lo[HALF_COUPLE + m] += dcouple[m];
       hi[HALF_COUPLE + m] += dcouple[m];
     }
-    for (int m = 0; m < 3; m++) out.couple[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
+  }
 
-    // torques: moment of the shear force about each centre, plus the couple
+  // the couple of the pair (mean of the halves) and the torques: moment
+  // of the shear force about each centre, plus the couple
+  MCA_INLINE void link_torques(const double *hist, const MCALinkMotion &mo, MCALinkForces &out)
+  {
+    const double *lo = hist + H_LO;
+    const double *hi = hist + H_HI;
+    const double *n = out.n;
+    for (int m = 0; m < 3; m++) out.couple[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
     double nxf[3];
     cross3(n, out.f, nxf);
     for (int m = 0; m < 3; m++) {
       out.tq_lo[m] = mo.q_lo * nxf[m] + out.couple[m];
       out.tq_hi[m] = mo.q_hi * nxf[m] - out.couple[m];
     }
-
     for (int m = 0; m < 3; m++) out.trac[m] = out.sig * n[m] + out.t[m];
   }
 
@@ -369,6 +415,31 @@ namespace MCAKernels {
     hist[H_APREV] = out.area;
   }
 
+  // the same in two parts: what the tractions of the last step did (in
+  // the trial pass, before the correction changes them) and what this
+  // step's do
+  MCA_INLINE double link_work_old(const double *hist, const MCALinkMotion &mo)
+  {
+    const double a_old = hist[H_APREV];
+    double work = 0.5 * a_old * mo.sig_old * mo.dr;
+    for (int m = 0; m < 3; m++)
+      work += 0.5 * a_old * mo.t_old[m] * mo.dl[m] + 0.5 * mo.c_old[m] * mo.dth[m];
+    return work;
+  }
+
+  MCA_INLINE void link_work_new(double *hist, double work_old, const MCALinkMotion &mo,
+                                const MCALinkForces &out)
+  {
+    double work = 0.5 * out.area * out.sig * mo.dr;
+    for (int m = 0; m < 3; m++)
+      work += 0.5 * out.area * out.t[m] * mo.dl[m] + 0.5 * out.couple[m] * mo.dth[m];
+    hist[H_WORK] += work_old + work;
+
+    hist[H_RPREV] = out.r;
+    for (int m = 0; m < 3; m++) hist[H_NPREV + m] = out.n[m];
+    hist[H_APREV] = out.area;
+  }
+
   // one step of a linked pair: hist is updated (the caller keeps or
   // discards it), out holds what acts on the automata
   MCA_FORCE_INLINE void linked_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
@@ -383,11 +454,87 @@ namespace MCAKernels {
     link_motion(hist, e, out, mo);
     normal_traction(hist, e, m_lo, m_hi, mo);
     shear_traction(hist, e, m_lo, m_hi, out.n, mo);
-    link_forces(hist, e, m_lo, m_hi, mo, out);
+    link_area(hist, e, m_lo, m_hi, out);
+    link_force(hist, out);
+    link_couple(hist, e, m_lo, m_hi, mo, out);
+    link_torques(hist, mo, out);
     // optional parts: one test each when they are off
     const int damping = e.layout->link_offset[PART_DAMPING];
     if (damping >= 0) link_damping(hist + damping, e, m_lo, m_hi, mo, out);
     link_work(hist, mo, out);
+  }
+
+  /* ----------------------------------------------------------------------
+     a model with plasticity takes a step of a linked pair in two passes,
+     between which each automaton finds its return factor M from the
+     trial stress of all its links (doc/src/Developer_mca.rst):
+       linked_pair_trial      the elastic trial of the tractions and
+                              couples (left in the row), the old part of
+                              the work; out.n and out.trac for the trial
+                              stress of the automata
+       linked_pair_corrected  the kinematics again, the plastic correction
+                              of each half with its automaton's M and mean
+                              stress, the forces (mean of the halves),
+                              damping and the work
+  ------------------------------------------------------------------------- */
+
+  MCA_FORCE_INLINE void linked_pair_trial(double *hist, const MCALinkEnds &e,
+                                          const MCAMaterial &mat_lo, const MCAMaterial &mat_hi,
+                                          MCALinkForces &out)
+  {
+    const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
+    MCALinkMotion mo;
+    link_motion(hist, e, out, mo);
+    normal_traction(hist, e, m_lo, m_hi, mo);
+    shear_traction(hist, e, m_lo, m_hi, out.n, mo);
+    link_area(hist, e, m_lo, m_hi, out);
+    link_couple(hist, e, m_lo, m_hi, mo, out);
+    hist[e.layout->link_offset[PART_PLASTICITY] + P_WORK_OLD] = link_work_old(hist, mo);
+    const double *lo = hist + H_LO, *hi = hist + H_HI;
+    out.sig = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
+    for (int m = 0; m < 3; m++) {
+      out.t[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
+      out.trac[m] = out.sig * out.n[m] + out.t[m];
+    }
+  }
+
+  // what the correction reads of an automaton: its return factor M and
+  // the mean stress of its trial
+  struct MCAReturnEnds {
+    double scale_lo, scale_hi;
+    double smean_lo, smean_hi;
+  };
+
+  MCA_FORCE_INLINE void linked_pair_corrected(double *hist, const MCALinkEnds &e,
+                                              const MCAMaterial &mat_lo, const MCAMaterial &mat_hi,
+                                              const MCAReturnEnds &ret, MCALinkForces &out)
+  {
+    const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
+    MCALinkMotion mo;
+    // the kinematics of the trial, from the same row values
+    link_kinematics(hist, e, out, mo);
+    mo.q_lo = hist[H_Q0LO] * (1.0 + hist[H_LO + HALF_EPS]);
+    mo.q_hi = hist[H_Q0HI] * (1.0 + hist[H_HI + HALF_EPS]);
+    link_slip(hist, e, out.n, mo);
+    link_area(hist, e, m_lo, m_hi, out);
+
+    double *block = hist + e.layout->link_offset[PART_PLASTICITY];
+    double work = 0.0;
+    if (ret.scale_lo != 1.0)
+      work +=
+          plastic_correct_half(hist + H_LO, ret.scale_lo, ret.smean_lo, m_lo.shear, hist[H_Q0LO],
+                               mo.q_lo, out.area, e.chi, out.n, HALF_SIG, HALF_T, HALF_COUPLE);
+    if (ret.scale_hi != 1.0)
+      work +=
+          plastic_correct_half(hist + H_HI, ret.scale_hi, ret.smean_hi, m_hi.shear, hist[H_Q0HI],
+                               mo.q_hi, out.area, e.chi, out.n, HALF_SIG, HALF_T, HALF_COUPLE);
+    block[P_WORK] += work;
+
+    link_force(hist, out);
+    link_torques(hist, mo, out);
+    const int damping = e.layout->link_offset[PART_DAMPING];
+    if (damping >= 0) link_damping(hist + damping, e, m_lo, m_hi, mo, out);
+    link_work_new(hist, block[P_WORK_OLD], mo, out);
   }
 
 }    // namespace MCAKernels

@@ -153,7 +153,28 @@ namespace MCAKernels {
     double cutsq;    // square of the pair cutoff (links longer are counted)
   };
 
-  template <class D, class Sums, class Tally, class Totals>
+  // what the law reads of the automata lo and hi of a link (scratch: 12
+  // doubles for rows that are not contiguous in memory)
+  template <class D>
+  MCA_FORCE_INLINE void link_ends_of(const D &d, int lo, int hi, double dt, double *scratch,
+                                     MCALinkEnds &e)
+  {
+    e.x_lo = d.x_row(lo, scratch);
+    e.x_hi = d.x_row(hi, scratch + 3);
+    e.w_lo = d.omega_row(lo, scratch + 6);
+    e.w_hi = d.omega_row(hi, scratch + 9);
+    e.dsm_lo = d.dsmean(lo);
+    e.dsm_hi = d.dsmean(hi);
+    e.sm_lo = d.smean_pred(lo);
+    e.sm_hi = d.smean_pred(hi);
+    e.chi = face_moment_factor(d.packing(lo));
+    e.dt = dt;
+    e.layout = &d.layout;
+  }
+
+  // (Plastic: the second pass of a model with plasticity, after the trial
+  // pass and the return of the automata)
+  template <bool Plastic, class D, class Sums, class Tally, class Totals>
   MCA_FUNCTION void link_pass_of(const D &d, const Sums &sums, const Tally &tally,
                                  const MCALinkPassFlags &p, int i, Totals &totals)
   {
@@ -180,19 +201,28 @@ namespace MCAKernels {
       }
       MCALinkEnds e;
       double scratch[12];
-      e.x_lo = d.x_row(lo, scratch);
-      e.x_hi = d.x_row(hi, scratch + 3);
-      e.w_lo = d.omega_row(lo, scratch + 6);
-      e.w_hi = d.omega_row(hi, scratch + 9);
-      e.dsm_lo = d.dsmean(lo);
-      e.dsm_hi = d.dsmean(hi);
-      e.sm_lo = d.smean_pred(lo);
-      e.sm_hi = d.smean_pred(hi);
-      e.chi = face_moment_factor(d.packing(lo));
-      e.dt = p.dt;
-      e.layout = &d.layout;
+      link_ends_of(d, lo, hi, p.dt, scratch, e);
       MCALinkForces out;
-      linked_pair(h, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
+      const MCAMaterial &m_lo = d.material(d.type(lo)), &m_hi = d.material(d.type(hi));
+      double elastic_work;
+      if (Plastic && !p.commit) {
+        // a setup returns no automaton: its forces are those of the last
+        // step (the split of the halves gives back their mean) plus the
+        // elastic response to what moved since
+        linked_pair(h, e, m_lo, m_hi, out);
+        elastic_work = h[H_WORK] - h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
+      } else if (Plastic) {
+        MCAReturnEnds ret;
+        ret.scale_lo = d.return_scale(lo);
+        ret.scale_hi = d.return_scale(hi);
+        ret.smean_lo = d.return_smean(lo);
+        ret.smean_hi = d.return_smean(hi);
+        linked_pair_corrected(h, e, m_lo, m_hi, ret, out);
+        elastic_work = h[H_WORK] - h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
+      } else {
+        linked_pair(h, e, m_lo, m_hi, out);
+        elastic_work = h[H_WORK];
+      }
       // counted once per owner: the warning halves the sum
       if (out.r * out.r > p.cutsq) totals.nlong += jlocal ? 2 : 1;
 
@@ -223,7 +253,72 @@ namespace MCAKernels {
       }
 
       // energy and virial: the whole pair, or this owner's half of it
-      if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, h[H_WORK], out.f);
+      if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, elastic_work, out.f);
+    }
+  }
+
+  /* ----------------------------------------------------------------------
+     a model with plasticity: the trial pass (the elastic trial of the
+     links automaton i evaluates, left in their rows; its traction moment
+     B in the LS_BMAT columns of i and a local partner), then the return
+     of each automaton from its trial stress (M and the trial mean stress,
+     sent to the ghosts), then link_pass_of<true>.  In steps of a run only
+  ------------------------------------------------------------------------- */
+
+  // (steps of a run only: a setup returns no automaton, see link_pass_of)
+  template <class D, class Sums>
+  MCA_FUNCTION void trial_pass_of(const D &d, const Sums &sums, const MCALinkPassFlags &p, int i)
+  {
+    auto add = sums.begin(i);
+    for (int m = 0; m < d.nlinks(i); m++) {
+      double *row = d.history_row(i, m);
+      if (!linked(row)) continue;
+      const int j = d.partner(i, m);
+      if (partner_evaluates(d, i, j)) continue;
+      const bool ilo = d.tag(i) < d.tag(j);
+      const int lo = ilo ? i : j, hi = ilo ? j : i;
+      MCALinkEnds e;
+      double scratch[12];
+      link_ends_of(d, lo, hi, p.dt, scratch, e);
+      MCALinkForces out;
+      linked_pair_trial(row, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) sums.own(add, i, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+      if (j < d.nlocal) {
+        const auto to = sums.partner_of(add, j);
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++)
+            sums.partner(add, to, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+      }
+    }
+  }
+
+  // the return of automaton i from its trial traction moment: M and the
+  // trial mean stress for the links; in a step, the plastic strain and
+  // work advance
+  template <class D>
+  MCA_FUNCTION void plastic_return_of(const D &d, int i, const double *bmat, bool commit)
+  {
+    const int type = d.type(i);
+    double fab[6], stress[6], smean, seq, eeq;
+    for (int k = 0; k < 6; k++) fab[k] = d.fabric(i, k);
+    const double g = d.material(type).shear;
+    automaton_stress(bmat, fab, g, stress, smean, seq, eeq);
+    MCAPlasticReturn ret;
+    const bool interacting = d.link_count(i) > 0 && d.packing(i) != PACKING_NONE;
+    if (interacting) {
+      plastic_return(d.hardening(type), g, d.epsp(i), seq, ret);
+    } else {
+      ret.scale = 1.0;
+      ret.dep = 0.0;
+      ret.flow = 0.0;
+    }
+    d.return_scale(i) = ret.scale;
+    d.return_smean(i) = smean;
+    if (commit && ret.dep > 0.0) {
+      d.epsp(i) += ret.dep;
+      d.atom_state(i, d.layout.atom_offset[PART_PLASTICITY] + PA_WORK) +=
+          d.volume(i) * ret.flow * ret.dep;
     }
   }
 

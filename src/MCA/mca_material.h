@@ -67,6 +67,8 @@ namespace MCAKernels {
     double poisson;      // Poisson's ratio nu
     double density;      // mass density rho
     double viscosity;    // eta of the link damping (damping viscous; 0: none)
+    double yield;        // yield stress sigma_y (plasticity mises; 0: elastic)
+    double hardening;    // linear hardening modulus H = d sigma_y / d eps_p
     // derived (derive_material)
     double shear;       // G
     double bulk;        // K

@@ -18,6 +18,8 @@
 #include "comm.h"
 #include "error.h"
 #include "memory.h"
+#include "text_file_reader.h"
+#include "tokenizer.h"
 
 #include <cmath>
 #include <cstring>
@@ -52,8 +54,19 @@ const Keyword KEYWORDS[] = {
     {"nu", &MCAMaterial::poisson, "Poisson's ratio nu", -1.0, 0.5, false, "in (-1, 0.5)", true},
     {"rho", &MCAMaterial::density, "density rho", 0.0, INF, false, "> 0", true},
     {"eta", &MCAMaterial::viscosity, "viscosity eta", 0.0, INF, true, ">= 0 and finite", false},
+    {"yield", &MCAMaterial::yield, "yield stress", 0.0, INF, false, "> 0 and finite", false},
+    {"hardening", &MCAMaterial::hardening, "hardening modulus", 0.0, INF, true,
+     ">= 0 and finite (or: hardening table file keyword)", false},
 };
 constexpr int NKEYWORDS = sizeof(KEYWORDS) / sizeof(KEYWORDS[0]);
+
+// the bit of Input::given of the keyword of a field
+unsigned keyword_bit(double MCAMaterial::*field)
+{
+  for (int k = 0; k < NKEYWORDS; k++)
+    if (KEYWORDS[k].field == field) return 1u << k;
+  return 0;
+}
 
 // further limits of the model, beyond the physical range of a keyword
 void check_model(Error *error, const Keyword &key, double value)
@@ -71,12 +84,17 @@ void check_model(Error *error, const Keyword &key, double value)
 
 /* ---------------------------------------------------------------------- */
 
-MCAMaterials::MCAMaterials(LAMMPS *lmp) : Pointers(lmp), ntypes(0), type(nullptr), set(nullptr) {}
+MCAMaterials::MCAMaterials(LAMMPS *lmp) :
+    Pointers(lmp), ntypes(0), type(nullptr), set(nullptr), hardening(nullptr), tabulated(nullptr)
+{
+}
 
 MCAMaterials::~MCAMaterials()
 {
   memory->sfree(type);
   memory->destroy(set);
+  memory->sfree(hardening);
+  memory->destroy(tabulated);
 }
 
 void MCAMaterials::allocate(int n)
@@ -84,12 +102,147 @@ void MCAMaterials::allocate(int n)
   ntypes = n;
   memory->sfree(type);
   memory->destroy(set);
+  memory->sfree(hardening);
+  memory->destroy(tabulated);
   type = (MCAMaterial *) memory->smalloc((n + 1) * sizeof(MCAMaterial), "pair:material");
+  hardening = (MCAHardening *) memory->smalloc((n + 1) * sizeof(MCAHardening), "pair:hardening");
   memory->create(set, n + 1, "pair:material_set");
+  memory->create(tabulated, n + 1, "pair:material_tabulated");
   for (int i = 0; i <= n; i++) {
     type[i] = MCAMaterial();
+    hardening[i] = MCAHardening();
     set[i] = 0;
+    tabulated[i] = 0;
   }
+}
+
+bool MCAMaterials::any_plastic() const
+{
+  for (int i = 1; i <= ntypes; i++)
+    if (set[i] && hardening[i].npoints > 0) return true;
+  return false;
+}
+
+// the curve of type i: the table if given, else linear from yield and
+// hardening, else none (the type stays elastic)
+void MCAMaterials::set_curve(int i, const std::vector<double> &eps, const std::vector<double> &sig)
+{
+  MCAHardening &h = hardening[i];
+  h = MCAHardening();
+  tabulated[i] = eps.empty() ? 0 : 1;
+  if (tabulated[i]) {
+    h.npoints = eps.size();
+    for (int k = 0; k < h.npoints; k++) {
+      h.eps[k] = eps[k];
+      h.sig[k] = sig[k];
+    }
+    h.slope_end = 0.0;
+  } else if (type[i].yield > 0.0) {
+    h.npoints = 1;
+    h.eps[0] = 0.0;
+    h.sig[0] = type[i].yield;
+    h.slope_end = type[i].hardening;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   a hardening table: the section "keyword" of a text file, as the table
+   styles of LAMMPS write them
+
+     # comments
+     KEYWORD
+     N n
+
+     1 eps_p sigma_y
+     ...
+     n eps_p sigma_y
+
+   with n >= 2 points, eps_p starting at 0 and increasing, sigma_y > 0 and
+   not decreasing.  Read on proc 0; every error names the file and keyword
+------------------------------------------------------------------------- */
+
+void MCAMaterials::read_hardening_table(const std::string &file, const std::string &keyword,
+                                        Input &in)
+{
+  std::string message;
+  std::vector<double> eps, sig;
+  if (comm->me == 0) {
+    try {
+      TextFileReader reader(file, "hardening table");
+      char *line;
+      bool found = false;
+      while ((line = reader.next_line())) {
+        ValueTokenizer words(line);
+        if (words.count() > 0 && words.next_string() == keyword) {
+          found = true;
+          break;
+        }
+      }
+      if (!found) throw FileReaderException("has no section " + keyword);
+      line = reader.next_line();
+      ValueTokenizer header(line ? line : "");
+      if (!line || header.count() != 2 || header.next_string() != "N")
+        throw FileReaderException("lacks the line 'N n' after the keyword");
+      const int n = header.next_int();
+      if (n < 2 || n > MAX_HARDENING_POINTS)
+        throw FileReaderException(
+            fmt::format("gives N = {}; a table needs 2 to {} points", n, MAX_HARDENING_POINTS));
+      for (int k = 0; k < n; k++) {
+        line = reader.next_line();
+        if (!line)
+          throw FileReaderException(fmt::format("ends after {} of its N = {} points", k, n));
+        ValueTokenizer values(line);
+        if (values.count() != 3)
+          throw FileReaderException(fmt::format(
+              "point {} has {} values; each line is: index eps_p sigma_y", k + 1, values.count()));
+        values.next_int();
+        eps.push_back(values.next_double());
+        sig.push_back(values.next_double());
+      }
+    } catch (std::exception &e) {
+      message = e.what();
+      if (message.empty()) message = "cannot be read";
+    }
+  }
+  int len = message.size();
+  MPI_Bcast(&len, 1, MPI_INT, 0, world);
+  if (len > 0) {
+    message.resize(len);
+    MPI_Bcast(&message[0], len, MPI_CHAR, 0, world);
+    error->all(FLERR, "Pair mca: hardening table {} {}: {}", file, keyword, message);
+  }
+  int n = eps.size();
+  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  eps.resize(n);
+  sig.resize(n);
+  MPI_Bcast(eps.data(), n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(sig.data(), n, MPI_DOUBLE, 0, world);
+
+  if (eps[0] != 0.0)
+    error->all(FLERR,
+               "Pair mca: hardening table {} {}: the first point must be at eps_p = 0 (the "
+               "yield stress), got eps_p = {}",
+               file, keyword, eps[0]);
+  for (int k = 0; k < n; k++) {
+    if (!(sig[k] > 0.0) || !std::isfinite(sig[k]))
+      error->all(FLERR,
+                 "Pair mca: hardening table {} {}: sigma_y of point {} must be > 0 and "
+                 "finite, got {}",
+                 file, keyword, k + 1, sig[k]);
+    if (k == 0) continue;
+    if (!(eps[k] > eps[k - 1]) || !std::isfinite(eps[k]))
+      error->all(FLERR,
+                 "Pair mca: hardening table {} {}: eps_p must increase from point to point "
+                 "(point {}: {} after {})",
+                 file, keyword, k + 1, eps[k], eps[k - 1]);
+    if (sig[k] < sig[k - 1])
+      error->all(FLERR,
+                 "Pair mca: hardening table {} {}: sigma_y must not decrease (point {}: {} "
+                 "after {}); softening is not supported",
+                 file, keyword, k + 1, sig[k], sig[k - 1]);
+  }
+  in.table_eps = eps;
+  in.table_sig = sig;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -118,10 +271,22 @@ void MCAMaterials::assign(int lo, int hi, const Input &in)
   if ((in.given & required) != required)
     error->all(FLERR, "Pair mca: a material needs all of {} in one pair_coeff", keyword_list(true));
   check_moduli(in.values);
+  const bool table = !in.table_eps.empty();
+  const unsigned yield_bit = keyword_bit(&MCAMaterial::yield);
+  const unsigned hardening_bit = keyword_bit(&MCAMaterial::hardening);
+  if (table && (in.given & yield_bit))
+    error->all(FLERR,
+               "Pair mca: yield and a hardening table exclude each other (the table's first "
+               "point is the yield stress)");
+  if (!table && (in.given & hardening_bit) && !(in.given & yield_bit))
+    error->all(FLERR, "Pair mca: a hardening modulus needs a yield stress: add 'yield value'");
+  MCAMaterial values = in.values;
+  if (table) values.yield = in.table_sig[0];
   for (int i = lo; i <= hi; i++) {
-    type[i] = in.values;
+    type[i] = values;
     derive_material(type[i]);
     set[i] = 1;
+    set_curve(i, in.table_eps, in.table_sig);
   }
 }
 
@@ -185,9 +350,17 @@ void MCAMaterials::write_restart(FILE *fp) const
     for (int k = 0; k < NKEYWORDS; k++)
       fwrite(&(type[i].*KEYWORDS[k].field), sizeof(double), 1, fp);
   }
+  // the hardening tables: per type the number of points (0: none) and
+  // the points
+  for (int i = 1; i <= ntypes; i++) {
+    const int n = tabulated[i] ? hardening[i].npoints : 0;
+    fwrite(&n, sizeof(int), 1, fp);
+    fwrite(hardening[i].eps, sizeof(double), n, fp);
+    fwrite(hardening[i].sig, sizeof(double), n, fp);
+  }
 }
 
-void MCAMaterials::read_restart(FILE *fp)
+void MCAMaterials::read_restart(FILE *fp, bool with_tables)
 {
   int nkey = 0, len = 0;
   if (comm->me == 0) {
@@ -226,6 +399,21 @@ void MCAMaterials::read_restart(FILE *fp)
     type[i] = MCAMaterial();
     for (int v = 0; v < nkey; v++) type[i].*KEYWORDS[which[v]].field = values[v];
     if (set[i]) derive_material(type[i]);
+  }
+  for (int i = 1; i <= ntypes; i++) {
+    int n = 0;
+    if (with_tables && comm->me == 0) utils::sfread(FLERR, &n, sizeof(int), 1, fp, nullptr, error);
+    MPI_Bcast(&n, 1, MPI_INT, 0, world);
+    if (n < 0 || n > MAX_HARDENING_POINTS)
+      error->all(FLERR, "Invalid pair mca hardening table in restart file");
+    std::vector<double> eps(n), sig(n);
+    if (n > 0 && comm->me == 0) {
+      utils::sfread(FLERR, eps.data(), sizeof(double), n, fp, nullptr, error);
+      utils::sfread(FLERR, sig.data(), sizeof(double), n, fp, nullptr, error);
+    }
+    MPI_Bcast(eps.data(), n, MPI_DOUBLE, 0, world);
+    MPI_Bcast(sig.data(), n, MPI_DOUBLE, 0, world);
+    set_curve(i, eps, sig);
   }
 }
 

@@ -15,6 +15,7 @@
 #define LMP_MCA_MATERIALS_H
 
 #include "mca_material.h"
+#include "mca_plasticity.h"
 #include "pointers.h"
 
 #include <string>
@@ -31,6 +32,7 @@ namespace LAMMPS_NS {
 
 class MCAMaterials : protected Pointers {
   typedef MCAKernels::MCAMaterial MCAMaterial;
+  typedef MCAKernels::MCAHardening MCAHardening;
 
  public:
   MCAMaterials(class LAMMPS *);
@@ -41,9 +43,13 @@ class MCAMaterials : protected Pointers {
   struct Input {
     MCAMaterial values{};    // keywords not given stay 0
     unsigned given = 0;      // bit k: keyword k of the table was given
+    // hardening table: its points (eps_p, sigma_y), empty if none
+    std::vector<double> table_eps, table_sig;
   };
   // parse "key value" into in; false if key is no material keyword
   bool parse(const std::string &key, const char *value, Input &in);
+  // "hardening table file keyword": the section keyword of file into in
+  void read_hardening_table(const std::string &file, const std::string &keyword, Input &in);
   // the material of types lo..hi, all keywords needed
   void assign(int lo, int hi, const Input &in);
   // an error naming the first type without a material, if any
@@ -52,7 +58,8 @@ class MCAMaterials : protected Pointers {
   std::string keyword_list(bool required_only = false) const;
 
   void write_restart(FILE *) const;
-  void read_restart(FILE *);
+  // with_tables: the file holds the hardening tables after the values
+  void read_restart(FILE *, bool with_tables);
   // the layout of restart files before materials were written by name
   void read_restart_values(int type, const double *youngs_nu_rho, int set_flag);
 
@@ -60,13 +67,19 @@ class MCAMaterials : protected Pointers {
   double *column(const char *keyword);
 
   int ntypes;
-  MCAMaterial *type;    // [ntypes + 1]
-  int *set;             // [ntypes + 1]: 1 once the type has a material
+  MCAMaterial *type;          // [ntypes + 1]
+  int *set;                   // [ntypes + 1]: 1 once the type has a material
+  MCAHardening *hardening;    // [ntypes + 1]: hardening curve of each type
+  int *tabulated;             // [ntypes + 1]: 1 if its curve is a table
+  // is any type plastic (has a yield stress)?
+  bool any_plastic() const;
 
  private:
   std::vector<double> columns;
   // an error if the moduli the law forms from E and nu would overflow
   void check_moduli(const MCAMaterial &) const;
+  // the hardening curve of type i from its values (and table)
+  void set_curve(int i, const std::vector<double> &eps, const std::vector<double> &sig);
 };
 
 }    // namespace LAMMPS_NS

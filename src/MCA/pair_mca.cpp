@@ -46,6 +46,8 @@ using namespace MCAKernels;
 static constexpr double RESTART_NAMED_MATERIALS = -2.0;
 // then the parts of the link model by name too
 static constexpr double RESTART_NAMED_PARTS = -3.0;
+// then the hardening tables after the materials
+static constexpr double RESTART_HARDENING = -4.0;
 
 PairMCA::HostData PairMCA::host_data()
 {
@@ -67,6 +69,11 @@ PairMCA::HostData PairMCA::host_data()
   d.smean_ = avec->smean;
   d.seq_ = avec->seq;
   d.eeq_ = avec->eeq;
+  d.hardening_ = materials.hardening;
+  d.epsp_ = avec->epsp;
+  d.volume_ = avec->volume;
+  d.return_scale_ = return_scale;
+  d.return_smean_ = return_smean;
   return d;
 }
 
@@ -75,7 +82,8 @@ PairMCA::HostData PairMCA::host_data()
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairMCALinked(lmp, "Pair mca"), materials(lmp), link_allowed(nullptr), link_tolerance(nullptr),
     link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr), smean_pred(nullptr),
-    predictor_sums(nullptr), bmat(nullptr), avec(nullptr)
+    predictor_sums(nullptr), bmat(nullptr), return_scale(nullptr), return_smean(nullptr),
+    avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -91,6 +99,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   nmax = 0;
   comm_stage = STAGE_COUNT;
   restart_named = 0;
+  restart_tables = 0;
   select_parts({});
 }
 
@@ -178,13 +187,19 @@ void PairMCA::settings(int narg, char **arg)
   select_parts(chosen);
 }
 
-// a viscosity without the damping part, or the part without a viscosity,
-// is most likely a mistake of the input: say so
-void PairMCA::check_damping()
+bool PairMCA::plastic() const
+{
+  return model.layout().link_offset[PART_PLASTICITY] >= 0;
+}
+
+// a parameter without its part of the link law, or a part without its
+// parameter, is most likely a mistake of the input: say so
+void PairMCA::check_parts()
 {
   bool any_eta = false;
   for (int t = 1; t <= atom->ntypes; t++) any_eta = any_eta || materials.type[t].viscosity > 0.0;
   const bool damped = model.layout().link_offset[PART_DAMPING] >= 0;
+  const bool any_yield = materials.any_plastic();
   if (comm->me != 0) return;
   if (damped && !any_eta)
     error->warning(FLERR,
@@ -194,6 +209,14 @@ void PairMCA::check_damping()
     error->warning(FLERR,
                    "Pair mca: eta is given but the link model has no damping part: add "
                    "'damping viscous' to pair_style mca to use it");
+  if (plastic() && !any_yield)
+    error->warning(FLERR,
+                   "Pair mca: plasticity mises without a yield stress for any atom type "
+                   "changes nothing (give yield or hardening table in pair_coeff)");
+  if (!plastic() && any_yield)
+    error->warning(FLERR,
+                   "Pair mca: a yield stress is given but the link model has no plasticity "
+                   "part: add 'plasticity mises' to pair_style mca to use it");
 }
 
 // the slot of the link law a keyword names, or nullptr
@@ -240,7 +263,13 @@ void PairMCA::coeff(int narg, char **arg)
     if (iarg + 2 > narg)
       utils::missing_cmd_args(FLERR, std::string("pair_coeff ") + arg[iarg], error);
     const std::string key = arg[iarg];
-    if (materials.parse(key, arg[iarg + 1], material)) {
+    if (key == "hardening" && strcmp(arg[iarg + 1], "table") == 0) {
+      if (iarg + 4 > narg)
+        utils::missing_cmd_args(FLERR, "pair_coeff hardening table (file keyword)", error);
+      materials.read_hardening_table(arg[iarg + 2], arg[iarg + 3], material);
+      iarg += 4;
+      continue;
+    } else if (materials.parse(key, arg[iarg + 1], material)) {
     } else if (key == "link") {
       link = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     } else if (key == "tolerance") {
@@ -254,7 +283,7 @@ void PairMCA::coeff(int narg, char **arg)
     iarg += 2;
   }
 
-  if (material.given) {
+  if (material.given || !material.table_eps.empty()) {
     if (ilo != jlo || ihi != jhi)
       error->all(FLERR,
                  "Pair mca: E, nu and rho belong to atom types; use them with two equal "
@@ -290,7 +319,7 @@ void PairMCA::init_style()
     error->all(FLERR, "Pair style mca requires an atom map (atom_modify map array or hash)");
 
   materials.check_all_set();
-  check_damping();
+  check_parts();
 
   // the internal fix that keeps the links, with the blocks of the model
   init_links();
@@ -447,6 +476,8 @@ void PairMCA::grow_peratom()
   memory->create(link_count, nmax, "pair:link_count");
   memory->create(dsmean, nmax, "pair:dsmean");
   memory->create(smean_pred, nmax, "pair:smean_pred");
+  memory->create(return_scale, nmax, "pair:return_scale");
+  memory->create(return_smean, nmax, "pair:return_smean");
 }
 
 void PairMCA::destroy_peratom()
@@ -457,6 +488,8 @@ void PairMCA::destroy_peratom()
   memory->destroy(smean_pred);
   memory->destroy(predictor_sums);
   memory->destroy(bmat);
+  memory->destroy(return_scale);
+  memory->destroy(return_smean);
 }
 
 /* ----------------------------------------------------------------------
@@ -529,7 +562,24 @@ void PairMCA::compute(int eflag, int vflag)
   MCAHostTotals totals;
   for (int i = 0; i < d.nlocal; i++)
     for (int k = 0; k < 9; k++) bmat[i][k] = 0.0;
-  for (int i = 0; i < d.nlocal; i++) link_pass_of(d, sums, tally, p, i, totals);
+  if (plastic() && p.commit) {
+    // the elastic trial of the links, the return of each automaton from
+    // its trial stress (sent to the ghosts), then the corrected links.  A
+    // setup returns no automaton: its forces are those of the last step
+    // plus the elastic response to what moved since
+    for (int i = 0; i < d.nlocal; i++) trial_pass_of(d, sums, p, i);
+    for (int i = 0; i < d.nlocal; i++) {
+      plastic_return_of(d, i, bmat[i], p.commit);
+      for (int k = 0; k < 9; k++) bmat[i][k] = 0.0;
+    }
+    comm_stage = STAGE_RETURN;
+    MCACompat::forward_comm(comm, this);
+  }
+  if (plastic()) {
+    for (int i = 0; i < d.nlocal; i++) link_pass_of<true>(d, sums, tally, p, i, totals);
+  } else {
+    for (int i = 0; i < d.nlocal; i++) link_pass_of<false>(d, sums, tally, p, i, totals);
+  }
   if (p.commit && lazy) partner_rows_stale = 1;
 
   for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, bmat[i], p.commit);
@@ -545,6 +595,11 @@ int PairMCA::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
   int m = 0;
   if (comm_stage == STAGE_COUNT) {
     for (int i = 0; i < n; i++) buf[m++] = pred_stiffness[list[i]];
+  } else if (comm_stage == STAGE_RETURN) {
+    for (int i = 0; i < n; i++) {
+      buf[m++] = return_scale[list[i]];
+      buf[m++] = return_smean[list[i]];
+    }
   } else {
     for (int i = 0; i < n; i++) {
       buf[m++] = dsmean[list[i]];
@@ -562,6 +617,11 @@ void PairMCA::unpack_forward_comm(int n, int first, double *buf)
   const int last = first + n;
   if (comm_stage == STAGE_COUNT) {
     for (int i = first; i < last; i++) pred_stiffness[i] = buf[m++];
+  } else if (comm_stage == STAGE_RETURN) {
+    for (int i = first; i < last; i++) {
+      return_scale[i] = buf[m++];
+      return_smean[i] = buf[m++];
+    }
   } else {
     for (int i = first; i < last; i++) {
       dsmean[i] = buf[m++];
@@ -597,7 +657,7 @@ void PairMCA::read_restart(FILE *fp)
 {
   read_restart_settings(fp);
   allocate();
-  if (restart_named) materials.read_restart(fp);
+  if (restart_named) materials.read_restart(fp, restart_tables);
   const int me = comm->me;
   for (int i = 1; i <= atom->ntypes; i++) {
     if (!restart_named) {
@@ -628,7 +688,7 @@ void PairMCA::read_restart(FILE *fp)
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
-  fwrite(&RESTART_NAMED_PARTS, sizeof(double), 1, fp);
+  fwrite(&RESTART_HARDENING, sizeof(double), 1, fp);
   fwrite(&tolerance_default, sizeof(double), 1, fp);
   fwrite(&cutoff_user, sizeof(double), 1, fp);
   fwrite(&capacity_user, sizeof(int), 1, fp);
@@ -646,7 +706,8 @@ void PairMCA::read_restart_settings(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  const bool named_parts = (first == RESTART_NAMED_PARTS);
+  restart_tables = (first == RESTART_HARDENING);
+  const bool named_parts = restart_tables || (first == RESTART_NAMED_PARTS);
   restart_named = named_parts || (first == RESTART_NAMED_MATERIALS);
   if (!restart_named && first < 0.0)
     error->all(FLERR, "Restart file holds pair mca settings of an unknown layout ({})", first);
@@ -693,7 +754,8 @@ void *PairMCA::extract(const char *str, int &dim)
 
 double PairMCA::memory_usage()
 {
-  // link_count, pred_stiffness, dsmean, smean_pred, predictor sums, B
-  return (4.0 + PS_SIZE + 9.0) * nmax * sizeof(double) +
+  // link_count, pred_stiffness, dsmean, smean_pred, return M and mean,
+  // predictor sums, B
+  return (6.0 + PS_SIZE + 9.0) * nmax * sizeof(double) +
       2.0 * cache_rows * cache_cols * sizeof(int);
 }

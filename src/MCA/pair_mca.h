@@ -71,12 +71,15 @@ class PairMCA : public PairMCALinked {
   double **predictor_sums;    // predictor pass: PS_* columns (mca_link_passes.h); the
                               // first six, sum n n^T, are the fabric tensor of the stress
   double **bmat;              // link pass: sum of T n^T (LS_BMAT columns)
+  double *return_scale;       // plasticity: return factor M of each automaton (communicated)
+  double *return_smean;       // and the mean stress of its trial (communicated)
   void destroy_peratom();
-  // what the forward communication sends: the predictor stiffness, or the
-  // mean-stress increment and prediction
-  enum CommStage { STAGE_COUNT, STAGE_MEAN };
+  // what the forward communication sends: the predictor stiffness, the
+  // mean-stress increment and prediction, or the return of the automata
+  enum CommStage { STAGE_COUNT, STAGE_MEAN, STAGE_RETURN };
   int comm_stage;
-  int restart_named;    // the restart file being read names its material keywords
+  int restart_named;     // the restart file being read names its material keywords
+  int restart_tables;    // and holds hardening tables
 
   class MCAAtomFields *avec;
 
@@ -88,7 +91,8 @@ class PairMCA : public PairMCALinked {
   void set_masses();
   static const char *link_slot(const char *keyword);
   void select_parts(const std::vector<std::string> &chosen);
-  void check_damping();
+  void check_parts();
+  bool plastic() const;
 
   struct HostData;
   struct HostSums;

@@ -31,6 +31,9 @@ struct PairMCA::HostData : MCAHostLinks {
   int *link_count_;
   double **fabric_, **stress_;
   double *smean_, *seq_, *eeq_;
+  // plasticity
+  const MCAKernels::MCAHardening *hardening_;
+  double *epsp_, *volume_, *return_scale_, *return_smean_;
 
   double x(int i, int k) const { return x_[i][k]; }
   const double *x_row(int i, double *) const { return x_[i]; }
@@ -49,6 +52,11 @@ struct PairMCA::HostData : MCAHostLinks {
   double &smean(int i) const { return smean_[i]; }
   double &seq(int i) const { return seq_[i]; }
   double &eeq(int i) const { return eeq_[i]; }
+  const MCAKernels::MCAHardening &hardening(int t) const { return hardening_[t]; }
+  double &epsp(int i) const { return epsp_[i]; }
+  double volume(int i) const { return volume_[i]; }
+  double &return_scale(int i) const { return return_scale_[i]; }
+  double &return_smean(int i) const { return return_smean_[i]; }
 };
 
 // per-automaton sums in plain arrays (predictor: PS_* columns), added in

@@ -106,7 +106,8 @@ def stress_vector(text):
 
 
 @pytest.mark.parametrize("newton", ["on", "off"])
-@pytest.mark.parametrize("name", ["atomic-pair-mca", "atomic-pair-mca_damping"])
+@pytest.mark.parametrize("name", ["atomic-pair-mca", "atomic-pair-mca_damping",
+                                  "atomic-pair-mca_plasticity"])
 def test_pair_mca_kk_yaml(tmp_path, newton, name):
     build = kokkos_build()
     config = yaml.safe_load((TESTS / f"{name}.yaml").read_text())

@@ -109,9 +109,11 @@ def test_restart_with_unknown_link_block_is_refused(build, tmp_path):
 
 
 def test_restart_with_unknown_material_keyword_is_refused(build, tmp_path):
-    output = refused(build, tmp_path, b"E nu rho eta\0", b"E nu rhx eta\0")
+    output = refused(build, tmp_path, b"E nu rho eta yield hardening\0",
+                     b"E nu rhx eta yield hardening\0")
     assert re.search(r"ERROR: Restart file holds the material parameter rhx of pair mca, which "
-                     r"this version does not know \(it knows E, nu, rho and eta\)", output), \
+                     r"this version does not know \(it knows E, nu, rho, eta, yield and "
+                     r"hardening\)", output), \
         output[-2000:]
 
 
@@ -127,7 +129,8 @@ def test_parts_are_chosen_by_keyword(build, tmp_path):
             ("mca elastic hooke", r"Unknown elastic part hooke for pair_style mca "
                                   r"\(allowed: elastic\)"),
             ("mca plastic vonmises", r"Unknown pair_style mca keyword plastic \(allowed: "
-                                     r"tolerance, capacity, cutoff, elastic, damping\)")):
+                                     r"tolerance, capacity, cutoff, elastic, damping, "
+                                     r"plasticity\)")):
         bad = SCENE.replace("pair_style      mca\n", f"pair_style      {style}\n")
         result = build.run(bad, tmp_path / style.split()[1], check=False, timeout=120)
         output = result.stdout + result.stderr
