@@ -9,6 +9,10 @@ it does not see: cache misses and the cost of each instruction.)
 
     /usr/bin/python3 bench/ir_compare.py --base /tmp/base/kokkos/lmp \\
         --new ~/.cache/mca/build/kokkos/lmp [--modes cpu kk1] [--out FILE.md]
+
+With --options, one executable (--new) runs the elastic law and each
+optional part of in.bench (damping viscous, plasticity mises): what an
+option costs a scene that asks for it, in instructions (results/ir_options.md).
 """
 
 import argparse
@@ -44,16 +48,41 @@ def per_step(lmp, mode, variables=None):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--base", required=True, help="lmp executable before the change")
+    ap.add_argument("--base", help="lmp executable before the change")
     ap.add_argument("--new", required=True, help="lmp executable after the change")
     ap.add_argument("--modes", nargs="+", default=["cpu", "kk1"], choices=["cpu", "kk1"])
     ap.add_argument("--out", default=None, help="markdown file for the table")
+    ap.add_argument("--options", action="store_true",
+                    help="the optional parts of the link law against the elastic law (--new)")
     args = ap.parse_args()
+    if args.options:
+        return options(args)
+    if not args.base:
+        ap.error("--base is needed (or --options)")
     lines = ["| automata | mode | base instr/step | new instr/step | new/base |",
              "|---|---|---|---|---|"]
     for mode in args.modes:
         base, new = per_step(args.base, mode), per_step(args.new, mode)
         lines.append(f"| {ATOMS} | {mode} | {base:.1f} | {new:.1f} | {new / base:.4f} |")
+        print(lines[-1], flush=True)
+    if args.out:
+        with open(args.out, "w") as f:
+            f.write("\n".join(lines) + "\n")
+
+
+OPTIONS = {"damping viscous": {"damping": "viscous"}, "plasticity mises": {"plasticity": "mises"}}
+
+
+def options(args):
+    lines = ["| automata | mode | elastic instr/step | " + " | ".join(OPTIONS) + " | " +
+             " | ".join(f"{o.split()[0]}/elastic" for o in OPTIONS) + " |",
+             "|---|---|---|" + "---|" * (2 * len(OPTIONS))]
+    for mode in args.modes:
+        elastic = per_step(args.new, mode)
+        counts = [per_step(args.new, mode, variables) for variables in OPTIONS.values()]
+        lines.append(f"| {ATOMS} | {mode} | {elastic:.1f} | " +
+                     " | ".join(f"{c:.1f}" for c in counts) + " | " +
+                     " | ".join(f"{c / elastic:.3f}" for c in counts) + " |")
         print(lines[-1], flush=True)
     if args.out:
         with open(args.out, "w") as f:

@@ -375,19 +375,18 @@ void PairMCAKokkos<DeviceType>::link_pass(Pass &pass, bool commit, bool lazy, MC
 }
 
 /* ----------------------------------------------------------------------
-   the link pass with its sums (Plastic: the corrected links of a model
-   with plasticity)
+   the link pass with its sums (Law: LinkPassLaw of mca_link_passes.h)
 ------------------------------------------------------------------------- */
 
 template <class DeviceType>
-template <bool Plastic>
+template <int Law>
 void PairMCAKokkos<DeviceType>::link_passes(bool commit, bool lazy, MCALinkSums &sums)
 {
   const bool atom_tally = eflag_atom || vflag_atom;
   const MCAPairViews<DeviceType> d = views();
   if (need_dup()) {
     if (atom_tally) dup_tally.reset();
-    MCALinkPass<DeviceType, MCAChunkSums<DeviceType>, dup_type, Plastic> pass;
+    MCALinkPass<DeviceType, MCAChunkSums<DeviceType>, dup_type, Law> pass;
     pass.d = d;
     pass.sums.sums = d_link_sums;
     pass.sums.copies = d_link_copies;
@@ -396,7 +395,7 @@ void PairMCAKokkos<DeviceType>::link_passes(bool commit, bool lazy, MCALinkSums 
     link_pass(pass, commit, lazy, sums);
     if (atom_tally) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
   } else {
-    MCALinkPass<DeviceType, MCADirectSums<DeviceType>, direct_type, Plastic> pass;
+    MCALinkPass<DeviceType, MCADirectSums<DeviceType>, direct_type, Law> pass;
     pass.d = d;
     pass.sums.sums = direct_type(d_link_sums);
     pass.tally.tally = direct_type(d_atom_tally);
@@ -490,12 +489,14 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   if (atom_tally) Kokkos::deep_copy(d_atom_tally, 0.0);
   const MCAPairViews<DeviceType> d = views();
   MCALinkSums sums;
-  if (plastic()) {
-    // (a setup returns no automaton: see PairMCA::compute())
-    if (commit) plastic_return(commit);
-    link_passes<true>(commit, lazy, sums);
+  if (!plastic()) {
+    link_passes<LAW_ELASTIC>(commit, lazy, sums);
+  } else if (commit) {
+    plastic_return(commit);
+    link_passes<LAW_PLASTIC>(commit, lazy, sums);
   } else {
-    link_passes<false>(commit, lazy, sums);
+    // a setup returns no automaton (see PairMCA::compute())
+    link_passes<LAW_PLASTIC_SETUP>(commit, lazy, sums);
   }
 
   MCALinkFinish<DeviceType> finish;

@@ -115,7 +115,7 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   bool need_dup() const;
   int chunks() const;
   template <class Pass> void link_pass(Pass &, bool commit, bool lazy, struct MCALinkSums &);
-  template <bool Plastic> void link_passes(bool commit, bool lazy, struct MCALinkSums &);
+  template <int Law> void link_passes(bool commit, bool lazy, struct MCALinkSums &);
   void plastic_return(bool commit);
   // the two per-atom values a stage communicates
   void stage_views(int stage, MCAKokkos::dual_double_1d *&a, MCAKokkos::dual_double_1d *&b);

@@ -358,7 +358,7 @@ template <class TallyScatter> struct MCAKokkosTally {
    to both local automata
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, class Sums, class TallyScatter, bool Plastic> struct MCALinkPass {
+template <class DeviceType, class Sums, class TallyScatter, int Law> struct MCALinkPass {
   typedef DeviceType device_type;
   typedef MCALinkSums value_type;
   MCAPairViews<DeviceType> d;
@@ -368,7 +368,7 @@ template <class DeviceType, class Sums, class TallyScatter, bool Plastic> struct
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i, MCALinkSums &ev) const
   {
-    link_pass_of<Plastic>(d, sums, tally, flags, i, ev);
+    link_pass_of<Law>(d, sums, tally, flags, i, ev);
   }
 };
 

@@ -172,9 +172,14 @@ namespace MCAKernels {
     e.layout = &d.layout;
   }
 
-  // (Plastic: the second pass of a model with plasticity, after the trial
-  // pass and the return of the automata)
-  template <bool Plastic, class D, class Sums, class Tally, class Totals>
+  // the law of a link pass: elastic (also with damping), or with
+  // plasticity: a step (the second pass, after the trial pass and the
+  // return of the automata) or a setup (no return: the elastic sequence on
+  // a copy, the energy less the plastic work).  One instantiation each, so
+  // that no kernel carries the code of a sequence it does not run
+  enum LinkPassLaw { LAW_ELASTIC = 0, LAW_PLASTIC_SETUP, LAW_PLASTIC };
+
+  template <int Law, class D, class Sums, class Tally, class Totals>
   MCA_FUNCTION void link_pass_of(const D &d, const Sums &sums, const Tally &tally,
                                  const MCALinkPassFlags &p, int i, Totals &totals)
   {
@@ -205,13 +210,13 @@ namespace MCAKernels {
       MCALinkForces out;
       const MCAMaterial &m_lo = d.material(d.type(lo)), &m_hi = d.material(d.type(hi));
       double elastic_work;
-      if (Plastic && !p.commit) {
+      if (Law == LAW_PLASTIC_SETUP) {
         // a setup returns no automaton: its forces are those of the last
         // step (the split of the halves gives back their mean) plus the
         // elastic response to what moved since
         linked_pair(h, e, m_lo, m_hi, out);
         elastic_work = h[H_WORK] - h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
-      } else if (Plastic) {
+      } else if (Law == LAW_PLASTIC) {
         MCAReturnEnds ret;
         ret.scale_lo = d.return_scale(lo);
         ret.scale_hi = d.return_scale(hi);
@@ -262,7 +267,8 @@ namespace MCAKernels {
      links automaton i evaluates, left in their rows; its traction moment
      B in the LS_BMAT columns of i and a local partner), then the return
      of each automaton from its trial stress (M and the trial mean stress,
-     sent to the ghosts), then link_pass_of<true>.  In steps of a run only
+     sent to the ghosts), then link_pass_of<LAW_PLASTIC>.  In steps of a run
+     only
   ------------------------------------------------------------------------- */
 
   // (steps of a run only: a setup returns no automaton, see link_pass_of)
@@ -271,10 +277,12 @@ namespace MCAKernels {
   {
     auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
+      // (the order of the tests as in link_pass_of)
       double *row = d.history_row(i, m);
-      if (!linked(row)) continue;
+      if (D::row_state_first && !linked(row)) continue;
       const int j = d.partner(i, m);
       if (partner_evaluates(d, i, j)) continue;
+      if (!D::row_state_first && !linked(row)) continue;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       MCALinkEnds e;

@@ -182,7 +182,8 @@ void MCAMaterials::read_hardening_table(const std::string &file, const std::stri
       line = reader.next_line();
       ValueTokenizer header(line ? line : "");
       if (!line || header.count() != 2 || header.next_string() != "N")
-        throw FileReaderException("lacks the line 'N n' after the keyword");
+        throw FileReaderException(
+            "needs the line 'N n' (the number of points, nothing else) after the keyword");
       const int n = header.next_int();
       if (n < 2 || n > MAX_HARDENING_POINTS)
         throw FileReaderException(
@@ -274,10 +275,10 @@ void MCAMaterials::assign(int lo, int hi, const Input &in)
   const bool table = !in.table_eps.empty();
   const unsigned yield_bit = keyword_bit(&MCAMaterial::yield);
   const unsigned hardening_bit = keyword_bit(&MCAMaterial::hardening);
-  if (table && (in.given & yield_bit))
+  if (table && (in.given & (yield_bit | hardening_bit)))
     error->all(FLERR,
-               "Pair mca: yield and a hardening table exclude each other (the table's first "
-               "point is the yield stress)");
+               "Pair mca: a hardening table excludes yield and a hardening modulus (the "
+               "table's first point is the yield stress, its segments the hardening)");
   if (!table && (in.given & hardening_bit) && !(in.given & yield_bit))
     error->all(FLERR, "Pair mca: a hardening modulus needs a yield stress: add 'yield value'");
   MCAMaterial values = in.values;

@@ -286,9 +286,10 @@ void PairMCA::coeff(int narg, char **arg)
   if (material.given || !material.table_eps.empty()) {
     if (ilo != jlo || ihi != jhi)
       error->all(FLERR,
-                 "Pair mca: E, nu and rho belong to atom types; use them with two equal "
-                 "type ranges (e.g. pair_coeff 1 1 or pair_coeff * *), not {} {}",
-                 arg[0], arg[1]);
+                 "Pair mca: the material keywords ({}, hardening table) belong to atom "
+                 "types; use them with two equal type ranges (e.g. pair_coeff 1 1 or "
+                 "pair_coeff * *), not {} {}",
+                 materials.keyword_list(), arg[0], arg[1]);
     materials.assign(ilo, ihi, material);
   }
 
@@ -575,10 +576,13 @@ void PairMCA::compute(int eflag, int vflag)
     comm_stage = STAGE_RETURN;
     MCACompat::forward_comm(comm, this);
   }
-  if (plastic()) {
-    for (int i = 0; i < d.nlocal; i++) link_pass_of<true>(d, sums, tally, p, i, totals);
+  if (!plastic()) {
+    for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_ELASTIC>(d, sums, tally, p, i, totals);
+  } else if (p.commit) {
+    for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_PLASTIC>(d, sums, tally, p, i, totals);
   } else {
-    for (int i = 0; i < d.nlocal; i++) link_pass_of<false>(d, sums, tally, p, i, totals);
+    for (int i = 0; i < d.nlocal; i++)
+      link_pass_of<LAW_PLASTIC_SETUP>(d, sums, tally, p, i, totals);
   }
   if (p.commit && lazy) partner_rows_stale = 1;
 

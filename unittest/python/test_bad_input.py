@@ -148,7 +148,8 @@ CASES = [
     ("pair coeff partial", BOX + "pair_style mca\npair_coeff * * E 1e9 nu 0.3\n",
      r"a material needs all of E, nu and rho"),
     ("pair coeff ranges", BOX + "pair_style mca\npair_coeff 1 2 E 1e9 nu 0.3 rho 1\n",
-     r"E, nu and rho belong to atom types"),
+     r"the material keywords \(E, nu, rho, eta, yield and hardening, hardening table\) "
+     r"belong to atom types"),
     ("pair coeff missing", BOX + "comm_modify vel yes\npair_style mca\n"
      "pair_coeff 1 1 E 1e9 nu 0.3 rho 1\nrun 0\n",
      r"All pair coeffs are not set|no material \(E, nu, rho\) for atom type 2"),

@@ -228,23 +228,33 @@ write_dump      all custom final.txt id x y z vx vy vz fx fy fz c_P[1] c_P[2] &
 """
 
 
-def pulled_cube(build, directory, extra_args=(), nprocs=1, split=None, nsteps=400):
+def pulled_cube(build, directory, extra_args=(), nprocs=1, split=None, nsteps=400,
+                table=False):
     """A 4a fcc cube (365 automata, from one data file: the same atom IDs
     on any number of ranks), its top pulled at 0.05 m/s: plastic from step
     85 on.  split: 'memory' (two runs) or 'restart' (through a file)."""
     build.run(CREATE, directory, name="in.create")
+    cube = CUBE
+    if table:
+        # the restart file must carry the table: it is removed before the
+        # second half
+        (directory / "cube.table").write_text("CUBE\nN 3\n\n1 0.0 2e6\n2 2e-5 2.2e6\n"
+                                              "3 1e-4 2.3e6\n")
+        cube = CUBE.replace("yield 2e6 hardening 1e9", "hardening table cube.table CUBE")
     half = nsteps // 2
     if split == "restart":
-        build.run(CUBE + LOAD + f"run {half}\nwrite_restart half.restart\n", directory,
+        build.run(cube + LOAD + f"run {half}\nwrite_restart half.restart\n", directory,
                   extra_args=extra_args, nprocs=nprocs)
+        if table:
+            (directory / "cube.table").unlink()
         # the restart file holds the pair style, its materials and links;
         # groups, fixes and computes are given again
         script = ("units si\natom_modify map array sort 0 0\nread_restart half.restart\n"
                   "comm_modify vel yes\n" + LOAD + f"run {half}\n")
     elif split == "memory":
-        script = CUBE + LOAD + f"run {half}\nrun {half}\n"
+        script = cube + LOAD + f"run {half}\nrun {half}\n"
     else:
-        script = CUBE + LOAD + f"run {nsteps}\n"
+        script = cube + LOAD + f"run {nsteps}\n"
     build.run(script + FINAL, directory, extra_args=extra_args, nprocs=nprocs, name="in.cube")
     return np.loadtxt(directory / "final.txt", skiprows=9), read_thermo(directory / "log.lammps")
 
@@ -277,13 +287,18 @@ def test_pulled_cube_yields_unevenly(build, tmp_path):
     assert np.all(epsp >= 0)
 
 
-def test_pulled_cube_restart_is_exact(build, tmp_path):
-    """Plastic strain (atom style), plastic work (links fix) and the rows
-    are in the restart file: the split run is bit for bit the same."""
-    memory, t_memory = pulled_cube(build, tmp_path / "memory", split="memory")
-    restart, t_restart = pulled_cube(build, tmp_path / "restart", split="restart")
+@pytest.mark.parametrize("hardening", ["linear", "table"])
+def test_pulled_cube_restart_is_exact(build, tmp_path, hardening):
+    """Plastic strain (atom style), plastic work (links fix), the rows and
+    the hardening table are in the restart file: the split run is bit for
+    bit the same."""
+    table = hardening == "table"
+    memory, t_memory = pulled_cube(build, tmp_path / "memory", split="memory", table=table)
+    restart, t_restart = pulled_cube(build, tmp_path / "restart", split="restart", table=table)
     assert np.array_equal(memory, restart)
     assert np.array_equal(t_memory["c_Ps[2]"], t_restart["c_Ps[2]"])
+    if table:
+        return
     # a run split in two continues as one run but for the setup between
     # them (doc/src/pair_mca.rst, Restart): printed for the record
     whole, _ = pulled_cube(build, tmp_path / "whole")
@@ -327,6 +342,7 @@ TABLES = {
     "columns": "AL\nN 2\n\n1 0.0 2e6\n2 1e-3\n",
     "noheader": "AL\n\n1 0.0 2e6\n2 1e-3 3e6\n",
     "negative": "AL\nN 2\n\n1 0.0 -2e6\n2 1e-3 3e6\n",
+    "good": "AL\nN 2\n\n1 0.0 2e6\n2 1e-3 3e6\n",
 }
 SINGLE = """
 units           si
@@ -355,7 +371,8 @@ run             1
     ("hardening table t.table AL", "first", "the first point must be at eps_p = 0"),
     ("hardening table t.table AL", "truncated", "ends after 2 of its N = 4 points"),
     ("hardening table t.table AL", "columns", "point 2 has 2 values"),
-    ("hardening table t.table AL", "noheader", "lacks the line 'N n'"),
+    ("hardening table t.table AL", "noheader", "needs the line 'N n'"),
+    ("hardening 1e9 hardening table t.table AL", "good", "a hardening table excludes"),
     ("hardening table t.table AL", "negative", "sigma_y of point 1 must be > 0"),
     ("hardening table t.table XX", "short", "has no section XX"),
     ("hardening table t.table", None, "Illegal pair_coeff hardening table"),
@@ -377,7 +394,8 @@ def test_yield_and_table_exclude_each_other(build, tmp_path):
     result = build.run(SINGLE.format(coeff="yield 2e6 hardening table t.table AL"), tmp_path,
                        check=False, timeout=120)
     assert result.returncode != 0
-    assert "yield and a hardening table exclude each other" in result.stdout + result.stderr
+    assert "a hardening table excludes yield and a hardening modulus" in \
+        result.stdout + result.stderr
 
 
 @pytest.mark.parametrize("style,coeff,message", [
