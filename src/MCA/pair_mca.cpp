@@ -269,6 +269,11 @@ void PairMCA::coeff(int narg, char **arg)
       materials.read_hardening_table(arg[iarg + 2], arg[iarg + 3], material);
       iarg += 4;
       continue;
+    } else if (key == "hardening" && !utils::is_double(arg[iarg + 1])) {
+      error->all(FLERR,
+                 "Pair mca: hardening takes a modulus (a number >= 0) or 'table file keyword', "
+                 "got {}",
+                 arg[iarg + 1]);
     } else if (materials.parse(key, arg[iarg + 1], material)) {
     } else if (key == "link") {
       link = utils::logical(FLERR, arg[iarg + 1], false, lmp);

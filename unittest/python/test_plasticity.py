@@ -405,6 +405,8 @@ run             1
     ("hardening table t.table AL", "negative", "sigma_y of point 1 must be > 0"),
     ("hardening table t.table XX", "short", "has no section XX"),
     ("hardening table t.table", None, "Illegal pair_coeff hardening table"),
+    ("yield 2e6 hardening tabel", None, "hardening takes a modulus (a number >= 0) or 'table "
+                                        "file keyword', got tabel"),
 ])
 def test_bad_plasticity_input(build, tmp_path, coeff, table, message):
     tmp_path.mkdir(parents=True, exist_ok=True)
