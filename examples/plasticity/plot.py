@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from shear_model import Hardening, shear_response  # noqa: E402
+from shear_model import Hardening, bilinear_yield, shear_response  # noqa: E402
 
 G = 70.0e9 / 2.6
 SY, H = 2.0e6, 10.0e9
@@ -24,14 +24,6 @@ CURVES = {"linear": Hardening.linear(SY, H),
           "table": Hardening.table("hardening.table", "AL_V4")}
 
 E, NU = 70.0e9, 0.3
-
-
-def bilinear_yield(strain, stress, elastic, plastic):
-    """Where the lines fitted to the elastic and post-yield parts meet."""
-    e1, e0 = np.polyfit(strain[elastic], stress[elastic], 1)
-    p1, p0 = np.polyfit(strain[plastic], stress[plastic], 1)
-    x = (p0 - e0) / (e1 - p1)
-    return e1 * x + e0, e1, p1
 
 
 fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.6))

@@ -6,7 +6,9 @@ exact solution of rate-independent J2 plasticity: the trial equivalent
 stress sqrt(3)|tau| falls by 3G per unit of equivalent plastic strain onto
 the flow stress sigma_y(eps_p), and eps_p = gamma_p / sqrt(3).  Given a
 history of shear strains gamma (any order: loading, unloading, reverse
-yield) the model gives the shear stress and eps_p after each."""
+yield) the model gives the shear stress and eps_p after each.  Also the
+yield stress of a measured curve (bilinear_yield), for plot.py and the
+tests."""
 
 import math
 
@@ -85,3 +87,12 @@ def shear_response(gammas, shear_modulus, hardening):
         taus.append(tau)
         eps.append(ep)
     return np.array(taus), np.array(eps)
+
+
+def bilinear_yield(strain, stress, elastic, plastic):
+    """The stress where the lines fitted to the elastic and the plastic
+    parts of a loading curve meet, and their slopes."""
+    e1, e0 = np.polyfit(strain[elastic], stress[elastic], 1)
+    p1, p0 = np.polyfit(strain[plastic], stress[plastic], 1)
+    x = (p0 - e0) / (e1 - p1)
+    return e1 * x + e0, e1, p1

@@ -162,8 +162,8 @@ namespace MCAKernels {
        shear_traction     carry shear tractions and couples with the pair,
                           elastic trial of the shear tractions
        link_area          contact area
-       link_force         pair force from the mean tractions of the halves
        link_couple        bending and torsion increments of the halves
+       link_force         pair force from the mean tractions of the halves
        link_torques       couple of the pair, torques
        link_damping       (damping viscous) dashpot force and torques, the
                           energy it dissipated
@@ -232,6 +232,13 @@ namespace MCAKernels {
     }
   }
 
+  // the current half lengths q = q0 (1 + eps) of the two halves
+  MCA_INLINE void half_lengths(const double *hist, MCALinkMotion &mo)
+  {
+    mo.q_lo = hist[H_Q0LO] * (1.0 + hist[H_LO + HALF_EPS]);
+    mo.q_hi = hist[H_Q0HI] * (1.0 + hist[H_HI + HALF_EPS]);
+  }
+
   MCA_INLINE void normal_traction(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
                                   const MCAMaterial &m_hi, MCALinkMotion &mo)
   {
@@ -246,8 +253,7 @@ namespace MCAKernels {
     hi[HALF_EPS] += de_hi;
     lo[HALF_SIG] = sig_lo0 + 2.0 * m_lo.shear * de_lo + m_lo.coupling * e.dsm_lo;
     hi[HALF_SIG] = sig_hi0 + 2.0 * m_hi.shear * de_hi + m_hi.coupling * e.dsm_hi;
-    mo.q_lo = q0_lo * (1.0 + lo[HALF_EPS]);
-    mo.q_hi = q0_hi * (1.0 + hi[HALF_EPS]);
+    half_lengths(hist, mo);
   }
 
   // the slip of the contact points over the step (mo.q_lo, mo.q_hi set)
@@ -296,17 +302,21 @@ namespace MCAKernels {
     out.area = contact_area(hist[H_A0], hist[H_R0], out.r, e.sm_lo, m_lo.bulk, e.sm_hi, m_hi.bulk);
   }
 
-  // the pair force on lo from the mean tractions of the two halves
-  MCA_INLINE void link_force(const double *hist, MCALinkForces &out)
+  // the tractions of the pair: the mean of the two halves
+  MCA_INLINE void link_mean_tractions(const double *hist, MCALinkForces &out)
   {
     const double *lo = hist + H_LO;
     const double *hi = hist + H_HI;
-    const double *n = out.n;
     out.sig = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
-    for (int m = 0; m < 3; m++) {
-      out.t[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
-      out.f[m] = out.area * (out.sig * n[m] + out.t[m]);
-    }
+    for (int m = 0; m < 3; m++) out.t[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
+  }
+
+  // the pair force on lo from the mean tractions of the two halves
+  MCA_INLINE void link_force(const double *hist, MCALinkForces &out)
+  {
+    link_mean_tractions(hist, out);
+    const double *n = out.n;
+    for (int m = 0; m < 3; m++) out.f[m] = out.area * (out.sig * n[m] + out.t[m]);
   }
 
   // the couple increments of the step in both halves: the faces act as
@@ -440,6 +450,20 @@ namespace MCAKernels {
     hist[H_APREV] = out.area;
   }
 
+  // the elastic trial of a step: the tractions of both halves, the
+  // contact area and the couples, in the row (m_lo, m_hi: the caller's
+  // local copies of the materials)
+  MCA_FORCE_INLINE void elastic_trial(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                                      const MCAMaterial &m_hi, MCALinkForces &out,
+                                      MCALinkMotion &mo)
+  {
+    link_motion(hist, e, out, mo);
+    normal_traction(hist, e, m_lo, m_hi, mo);
+    shear_traction(hist, e, m_lo, m_hi, out.n, mo);
+    link_area(hist, e, m_lo, m_hi, out);
+    link_couple(hist, e, m_lo, m_hi, mo, out);
+  }
+
   // one step of a linked pair: hist is updated (the caller keeps or
   // discards it), out holds what acts on the automata
   MCA_FORCE_INLINE void linked_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
@@ -451,12 +475,8 @@ namespace MCAKernels {
     // stores stalls)
     const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
     MCALinkMotion mo;
-    link_motion(hist, e, out, mo);
-    normal_traction(hist, e, m_lo, m_hi, mo);
-    shear_traction(hist, e, m_lo, m_hi, out.n, mo);
-    link_area(hist, e, m_lo, m_hi, out);
+    elastic_trial(hist, e, m_lo, m_hi, out, mo);
     link_force(hist, out);
-    link_couple(hist, e, m_lo, m_hi, mo, out);
     link_torques(hist, mo, out);
     // optional parts: one test each when they are off
     const int damping = e.layout->link_offset[PART_DAMPING];
@@ -484,18 +504,10 @@ namespace MCAKernels {
   {
     const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
     MCALinkMotion mo;
-    link_motion(hist, e, out, mo);
-    normal_traction(hist, e, m_lo, m_hi, mo);
-    shear_traction(hist, e, m_lo, m_hi, out.n, mo);
-    link_area(hist, e, m_lo, m_hi, out);
-    link_couple(hist, e, m_lo, m_hi, mo, out);
+    elastic_trial(hist, e, m_lo, m_hi, out, mo);
     hist[e.layout->link_offset[PART_PLASTICITY] + P_WORK_OLD] = link_work_old(hist, mo);
-    const double *lo = hist + H_LO, *hi = hist + H_HI;
-    out.sig = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
-    for (int m = 0; m < 3; m++) {
-      out.t[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
-      out.trac[m] = out.sig * out.n[m] + out.t[m];
-    }
+    link_mean_tractions(hist, out);
+    for (int m = 0; m < 3; m++) out.trac[m] = out.sig * out.n[m] + out.t[m];
   }
 
   // what the correction reads of an automaton: its return factor M and
@@ -513,21 +525,18 @@ namespace MCAKernels {
     MCALinkMotion mo;
     // the kinematics of the trial, from the same row values
     link_kinematics(hist, e, out, mo);
-    mo.q_lo = hist[H_Q0LO] * (1.0 + hist[H_LO + HALF_EPS]);
-    mo.q_hi = hist[H_Q0HI] * (1.0 + hist[H_HI + HALF_EPS]);
+    half_lengths(hist, mo);
     link_slip(hist, e, out.n, mo);
     link_area(hist, e, m_lo, m_hi, out);
 
     double *block = hist + e.layout->link_offset[PART_PLASTICITY];
     double work = 0.0;
     if (ret.scale_lo != 1.0)
-      work +=
-          plastic_correct_half(hist + H_LO, ret.scale_lo, ret.smean_lo, m_lo.shear, hist[H_Q0LO],
-                               mo.q_lo, out.area, e.chi, out.n, HALF_SIG, HALF_T, HALF_COUPLE);
+      work += plastic_correct_half(hist + H_LO, ret.scale_lo, ret.smean_lo, m_lo.shear,
+                                   hist[H_Q0LO], mo.q_lo, out.area, e.chi, out.n);
     if (ret.scale_hi != 1.0)
-      work +=
-          plastic_correct_half(hist + H_HI, ret.scale_hi, ret.smean_hi, m_hi.shear, hist[H_Q0HI],
-                               mo.q_hi, out.area, e.chi, out.n, HALF_SIG, HALF_T, HALF_COUPLE);
+      work += plastic_correct_half(hist + H_HI, ret.scale_hi, ret.smean_hi, m_hi.shear,
+                                   hist[H_Q0HI], mo.q_hi, out.area, e.chi, out.n);
     block[P_WORK] += work;
 
     link_force(hist, out);

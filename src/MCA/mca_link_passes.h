@@ -172,6 +172,25 @@ namespace MCAKernels {
     e.layout = &d.layout;
   }
 
+  // T n^T of a link (the same for both automata) to the LS_BMAT columns of
+  // automaton i, or of a local partner (to: Sums::partner_of)
+  template <class Sums, class Thread>
+  MCA_FORCE_INLINE void add_traction_moment(const Sums &sums, Thread &add, int i,
+                                            const MCALinkForces &out)
+  {
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) sums.own(add, i, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+  }
+
+  template <class Sums, class Thread, class To>
+  MCA_FORCE_INLINE void add_traction_moment_to_partner(const Sums &sums, Thread &add, const To &to,
+                                                       const MCALinkForces &out)
+  {
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++)
+        sums.partner(add, to, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+  }
+
   // the law of a link pass: elastic (also with damping), or with
   // plasticity: a step (the second pass, after the trial pass and the
   // return of the automata) or a setup (no return: the elastic sequence on
@@ -209,13 +228,11 @@ namespace MCAKernels {
       link_ends_of(d, lo, hi, p.dt, scratch, e);
       MCALinkForces out;
       const MCAMaterial &m_lo = d.material(d.type(lo)), &m_hi = d.material(d.type(hi));
-      double elastic_work;
       if (Law == LAW_PLASTIC_SETUP) {
         // a setup returns no automaton: its forces are those of the last
         // step (the split of the halves gives back their mean) plus the
         // elastic response to what moved since
         linked_pair(h, e, m_lo, m_hi, out);
-        elastic_work = h[H_WORK] - h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
       } else if (Law == LAW_PLASTIC) {
         MCAReturnEnds ret;
         ret.scale_lo = d.return_scale(lo);
@@ -223,11 +240,13 @@ namespace MCAKernels {
         ret.smean_lo = d.return_smean(lo);
         ret.smean_hi = d.return_smean(hi);
         linked_pair_corrected(h, e, m_lo, m_hi, ret, out);
-        elastic_work = h[H_WORK] - h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
       } else {
         linked_pair(h, e, m_lo, m_hi, out);
-        elastic_work = h[H_WORK];
       }
+      // the energy of the pair is elastic: with plasticity, less the
+      // plastic work
+      double elastic_work = h[H_WORK];
+      if (Law != LAW_ELASTIC) elastic_work -= h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
       // counted once per owner: the warning halves the sum
       if (out.r * out.r > p.cutsq) totals.nlong += jlocal ? 2 : 1;
 
@@ -240,17 +259,14 @@ namespace MCAKernels {
         sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
         sums.own(add, i, LS_TORQUE + k, ilo ? out.tq_lo[k] : out.tq_hi[k]);
       }
-      for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++) sums.own(add, i, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+      add_traction_moment(sums, add, i, out);
       if (jlocal) {
         const auto to = sums.partner_of(add, j);
         for (int k = 0; k < 3; k++) {
           sums.partner(add, to, LS_FORCE + k, -out.f[k]);
           sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
         }
-        for (int a = 0; a < 3; a++)
-          for (int b = 0; b < 3; b++)
-            sums.partner(add, to, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+        add_traction_moment_to_partner(sums, add, to, out);
         if (p.commit && p.eager) {
           double *partner_row = d.history_row(j, d.row(i, m));
           for (int k = 0; k < d.layout.row_size; k++) partner_row[k] = row[k];
@@ -290,13 +306,10 @@ namespace MCAKernels {
       link_ends_of(d, lo, hi, p.dt, scratch, e);
       MCALinkForces out;
       linked_pair_trial(row, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
-      for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++) sums.own(add, i, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+      add_traction_moment(sums, add, i, out);
       if (j < d.nlocal) {
         const auto to = sums.partner_of(add, j);
-        for (int a = 0; a < 3; a++)
-          for (int b = 0; b < 3; b++)
-            sums.partner(add, to, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
+        add_traction_moment_to_partner(sums, add, to, out);
       }
     }
   }
@@ -312,15 +325,9 @@ namespace MCAKernels {
     for (int k = 0; k < 6; k++) fab[k] = d.fabric(i, k);
     const double g = d.material(type).shear;
     automaton_stress(bmat, fab, g, stress, smean, seq, eeq);
-    MCAPlasticReturn ret;
-    const bool interacting = d.link_count(i) > 0 && d.packing(i) != PACKING_NONE;
-    if (interacting) {
+    MCAPlasticReturn ret = {1.0, 0.0, 0.0};    // an automaton without links stays elastic
+    if (d.link_count(i) > 0 && d.packing(i) != PACKING_NONE)
       plastic_return(d.hardening(type), g, d.epsp(i), seq, ret);
-    } else {
-      ret.scale = 1.0;
-      ret.dep = 0.0;
-      ret.flow = 0.0;
-    }
     d.return_scale(i) = ret.scale;
     d.return_smean(i) = smean;
     if (commit && ret.dep > 0.0) {

@@ -24,6 +24,7 @@
 
 #include "mca_geometry.h"
 #include "mca_inline.h"
+#include "mca_link_layout.h"
 
 #include <cmath>
 
@@ -135,8 +136,9 @@ namespace MCAKernels {
 
   MCA_INLINE double plastic_correct_half(double *half, double scale, double smean, double g,
                                          double q0, double q, double area, double chi,
-                                         const double *n, int sig, int t, int couple)
+                                         const double *n)
   {
+    const int sig = HALF_SIG, t = HALF_T, couple = HALF_COUPLE;
     const double sig_c = (half[sig] - smean) * scale + smean;
     double work = sig_c * (half[sig] - sig_c) * q0;
     half[sig] = sig_c;

@@ -27,7 +27,7 @@ from mcatest import read_thermo
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "plasticity"
 sys.path.insert(0, str(EXAMPLE))
-from shear_model import Hardening, shear_response  # noqa: E402
+from shear_model import Hardening, bilinear_yield, shear_response  # noqa: E402
 
 E, NU = 70.0e9, 0.3
 G = E / (2 * (1 + NU))
@@ -139,15 +139,6 @@ thermo 50
 
 # ---------------------------------------------------------------------------
 # the thesis cube (V3) loaded past yield and unloaded, frictionless grips
-
-def bilinear_yield(strain, stress, elastic, plastic):
-    """The stress where the lines fitted to the elastic and the plastic
-    parts of a loading curve meet, and their slopes."""
-    e1, e0 = np.polyfit(strain[elastic], stress[elastic], 1)
-    p1, p0 = np.polyfit(strain[plastic], stress[plastic], 1)
-    x = (p0 - e0) / (e1 - p1)
-    return e1 * x + e0, e1, p1
-
 
 def test_cube_loading_unloading_in_tension(build, tmp_path):
     """examples/plasticity/in.load_unload at reduced size (6a cube, 1099
