@@ -98,6 +98,8 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::init_style()
       MCAKokkos::copy_to_device<DeviceType>(materials.type, atom->ntypes + 1, "pair:material");
   d_hardening = MCAKokkos::copy_to_device<DeviceType>(materials.hardening, atom->ntypes + 1,
                                                       "pair:hardening");
+  d_break_rules = MCAKokkos::copy_to_device<DeviceType>(
+      break_rules.data(), (atom->ntypes + 1) * (atom->ntypes + 1), "pair:break_rules");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -184,6 +186,9 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
   d.volume = avecKK->k_volume.template view<DeviceType>();
   d.return_scale = k_return_scale.template view<DeviceType>();
   d.return_smean = k_return_smean.template view<DeviceType>();
+  d.break_rules = d_break_rules;
+  d.break_stride = atom->ntypes + 1;
+  d.damage = avecKK->k_damage.template view<DeviceType>();
   if (eflag_atom) d.eatom = k_eatom.template view<DeviceType>();
   if (vflag_atom) d.vatom = k_vatom.template view<DeviceType>();
   d.nlocal = atom->nlocal;
@@ -196,9 +201,16 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
 
 template <class DeviceType>
 void PairMCAKokkos<DeviceType>::stage_views(int stage, MCAKokkos::dual_double_1d *&a,
-                                            MCAKokkos::dual_double_1d *&b)
+                                            MCAKokkos::dual_double_1d *&b,
+                                            MCAKokkos::dual_double_2d *&c)
 {
-  if (stage == STAGE_COUNT) {
+  c = nullptr;
+  if (stage == STAGE_BREAK) {
+    // (the order of PairMCA::pack_forward_comm)
+    a = &avecKK->k_epsp;
+    b = nullptr;
+    c = &avecKK->k_stress;
+  } else if (stage == STAGE_COUNT) {
     a = &k_pred_stiffness;
     b = nullptr;
   } else if (stage == STAGE_RETURN) {
@@ -214,12 +226,15 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::forward_comm_stage(i
 {
   comm_stage = stage;
   MCAKokkos::dual_double_1d *a, *b;
-  stage_views(stage, a, b);
+  MCAKokkos::dual_double_2d *c;
+  stage_views(stage, a, b, c);
   a->template modify<DeviceType>();
   if (b) b->template modify<DeviceType>();
+  if (c) c->template modify<DeviceType>();
   MCACompat::forward_comm(comm, this);
   a->template sync<DeviceType>();
   if (b) b->template sync<DeviceType>();
+  if (c) c->template sync<DeviceType>();
 }
 
 template <class DeviceType>
@@ -228,11 +243,15 @@ int PairMCAKokkos<DeviceType>::pack_forward_comm_kokkos(MCA_KK_PACK_FORWARD_ARGS
   (void) pbc_flag;
   (void) pbc;
   MCAKokkos::dual_double_1d *a, *b;
-  stage_views(comm_stage, a, b);
+  MCAKokkos::dual_double_2d *c;
+  stage_views(comm_stage, a, b, c);
   MCAPackForward<DeviceType> pack;
-  pack.stride = b ? 2 : 1;
+  pack.nb = b ? 1 : 0;
+  pack.ncols = c ? static_cast<int>(c->extent(1)) : 0;
+  pack.stride = 1 + pack.nb + pack.ncols;
   pack.a = a->template view<DeviceType>();
   if (b) pack.b = b->template view<DeviceType>();
+  if (c) pack.c = c->template view<DeviceType>();
   pack.list = k_sendlist.template view<DeviceType>();
   pack.buf = k_buf.template view<DeviceType>();
 #ifdef MCA_HAVE_KK_FLOAT
@@ -249,11 +268,15 @@ void PairMCAKokkos<DeviceType>::unpack_forward_comm_kokkos(int n, int first,
                                                            MCA_KK_COMM_BUFFER &k_buf)
 {
   MCAKokkos::dual_double_1d *a, *b;
-  stage_views(comm_stage, a, b);
+  MCAKokkos::dual_double_2d *c;
+  stage_views(comm_stage, a, b, c);
   MCAUnpackForward<DeviceType> unpack;
-  unpack.stride = b ? 2 : 1;
+  unpack.nb = b ? 1 : 0;
+  unpack.ncols = c ? static_cast<int>(c->extent(1)) : 0;
+  unpack.stride = 1 + unpack.nb + unpack.ncols;
   unpack.a = a->template view<DeviceType>();
   if (b) unpack.b = b->template view<DeviceType>();
+  if (c) unpack.c = c->template view<DeviceType>();
   unpack.buf = k_buf.template view<DeviceType>();
   unpack.first = first;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, n), unpack);
@@ -264,9 +287,11 @@ int PairMCAKokkos<DeviceType>::pack_forward_comm(int n, int *list, double *buf, 
                                                  int *pbc)
 {
   MCAKokkos::dual_double_1d *a, *b;
-  stage_views(comm_stage, a, b);
+  MCAKokkos::dual_double_2d *c;
+  stage_views(comm_stage, a, b, c);
   a->sync_host();
   if (b) b->sync_host();
+  if (c) c->sync_host();
   return PairMCA::pack_forward_comm(n, list, buf, pbc_flag, pbc);
 }
 
@@ -274,12 +299,15 @@ template <class DeviceType>
 void PairMCAKokkos<DeviceType>::unpack_forward_comm(int n, int first, double *buf)
 {
   MCAKokkos::dual_double_1d *a, *b;
-  stage_views(comm_stage, a, b);
+  MCAKokkos::dual_double_2d *c;
+  stage_views(comm_stage, a, b, c);
   a->sync_host();
   if (b) b->sync_host();
+  if (c) c->sync_host();
   PairMCA::unpack_forward_comm(n, first, buf);
   a->modify_host();
   if (b) b->modify_host();
+  if (c) c->modify_host();
 }
 
 /* ----------------------------------------------------------------------
@@ -443,6 +471,53 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool 
   forward_comm_stage(STAGE_RETURN);
 }
 
+/* ----------------------------------------------------------------------
+   fracture: the force of the broken pairs, added to the link sums; after
+   the stress of the step, the links that break and the damage (see
+   PairMCA::compute())
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+void PairMCAKokkos<DeviceType>::broken_passes(bool commit, bool lazy, MCALinkSums &sums)
+{
+  const MCAPairViews<DeviceType> d = views();
+  // (a reduction sets its result: the link pass's is added after)
+  MCALinkSums link_sums = sums;
+  if (need_dup()) {
+    if (eflag_atom || vflag_atom) dup_tally.reset();
+    MCABrokenPass<DeviceType, MCAChunkSums<DeviceType>, dup_type> pass;
+    pass.d = d;
+    pass.sums.sums = d_link_sums;
+    pass.sums.copies = d_link_copies;
+    pass.sums.chunk_size = chunk_size;
+    pass.tally.tally = dup_tally;
+    link_pass(pass, commit, lazy, sums);
+    if (eflag_atom || vflag_atom) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
+  } else {
+    MCABrokenPass<DeviceType, MCADirectSums<DeviceType>, direct_type> pass;
+    pass.d = d;
+    pass.sums.sums = direct_type(d_link_sums);
+    pass.tally.tally = direct_type(d_atom_tally);
+    link_pass(pass, commit, lazy, sums);
+  }
+  sums += link_sums;
+}
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::fracture(bool commit, bool lazy)
+{
+  const int nlocal = atom->nlocal;
+  if (commit) {
+    forward_comm_stage(STAGE_BREAK);
+    MCAFracturePass<DeviceType> pass;
+    pass.d = views();
+    pass.flags = break_flags(!lazy);
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass);
+  }
+  MCADamagePass<DeviceType> damage;
+  damage.d = views();
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), damage);
+}
+
 /* ---------------------------------------------------------------------- */
 
 template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, int vflag)
@@ -471,11 +546,16 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   if (partners_outdated()) {
     atomKK->sync(Host, X_MASK | TAG_MASK);
     links->to_host();
+    if (fractured()) forget_broken_links();
     refresh_partners();
+    linksKK->to_device();
     k_partner_cache.modify_host();
     k_row_cache.modify_host();
     k_partner_cache.template sync<DeviceType>();
     k_row_cache.template sync<DeviceType>();
+    count_links_kk();
+  } else if (fractured()) {
+    // links break between reneighborings
     count_links_kk();
   }
 
@@ -498,6 +578,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     // a setup returns no automaton (see PairMCA::compute())
     link_passes<LAW_PLASTIC_SETUP>(commit, lazy, sums);
   }
+  if (fractured()) broken_passes(commit, lazy, sums);
 
   MCALinkFinish<DeviceType> finish;
   finish.d = d;
@@ -506,6 +587,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   finish.eflag_atom = eflag_atom;
   finish.vflag_atom = vflag_atom;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), finish);
+  if (fractured()) fracture(commit, lazy);
 
   linksKK->device_changed();
   if (commit && lazy) partner_rows_stale = 1;

@@ -101,6 +101,8 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   // plasticity: the return of each automaton, sent to the ghosts
   MCAKokkos::dual_double_1d k_return_scale, k_return_smean;
   Kokkos::View<MCAKernels::MCAHardening *, DeviceType> d_hardening;
+  // fracture: the rules by type pair
+  Kokkos::View<MCAKernels::MCABreakRule *, DeviceType> d_break_rules;
   // per local automaton: link count, fabric tensor, and the sums of the
   // predictor, of the link pass and of the per-atom energy and virial
   typedef typename MCAScatter<DeviceType>::direct direct_type;
@@ -117,8 +119,12 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   template <class Pass> void link_pass(Pass &, bool commit, bool lazy, struct MCALinkSums &);
   template <int Law> void link_passes(bool commit, bool lazy, struct MCALinkSums &);
   void plastic_return(bool commit);
-  // the two per-atom values a stage communicates
-  void stage_views(int stage, MCAKokkos::dual_double_1d *&a, MCAKokkos::dual_double_1d *&b);
+  void broken_passes(bool commit, bool lazy, struct MCALinkSums &);
+  void fracture(bool commit, bool lazy);
+  // the per-atom values a stage communicates: a, b (or none), the columns
+  // of c (or none)
+  void stage_views(int stage, MCAKokkos::dual_double_1d *&a, MCAKokkos::dual_double_1d *&b,
+                   MCAKokkos::dual_double_2d *&c);
   // the caches of the base class, in DualViews
   MCAKokkos::dual_int_2d k_partner_cache, k_row_cache;
   // materials by type

@@ -64,6 +64,10 @@ template <class DeviceType> struct MCAPairViews {
   // of the automata, their return factor and trial mean stress
   Kokkos::View<MCAHardening *, DeviceType> hardening;
   double_1d epsp, volume, return_scale, return_smean;
+  // fracture: rules by type pair (row stride break_stride), damage
+  Kokkos::View<MCABreakRule *, DeviceType> break_rules;
+  int break_stride;
+  double_1d damage;
   int_1d link_count, foreign;
   double_2d fabric, predictor_sums, link_sums, atom_tally;
   Kokkos::View<MCAMaterial *, DeviceType> material;
@@ -97,6 +101,10 @@ template <class DeviceType> struct MCAPairViews {
   KOKKOS_INLINE_FUNCTION double *history_row(int i, int m) const
   {
     return &history(i, m * layout.row_size);
+  }
+  KOKKOS_INLINE_FUNCTION const MCABreakRule &break_rule(int ti, int tj) const
+  {
+    return break_rules(ti * break_stride + tj);
   }
 };
 
@@ -402,6 +410,41 @@ template <class DeviceType> struct MCAPlasticReturnPass {
 };
 
 /* ----------------------------------------------------------------------
+   kernels of a model with fracture: the force of the broken pairs (into
+   the link sums, before MCALinkFinish), the links that break after the
+   stress of the step is known, the damage of each automaton
+------------------------------------------------------------------------- */
+
+template <class DeviceType, class Sums, class TallyScatter> struct MCABrokenPass {
+  typedef DeviceType device_type;
+  typedef MCALinkSums value_type;
+  MCAPairViews<DeviceType> d;
+  Sums sums;
+  MCAKokkosTally<TallyScatter> tally;
+  MCALinkPassFlags flags;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, MCALinkSums &ev) const
+  {
+    broken_pass_of(d, sums, tally, flags, i, ev);
+  }
+};
+
+template <class DeviceType> struct MCAFracturePass {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  MCABreakFlags flags;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { fracture_pass_of(d, flags, i); }
+};
+
+template <class DeviceType> struct MCADamagePass {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { damage_of(d, i); }
+};
+
+/* ----------------------------------------------------------------------
    kernel: each automaton's forces, torques and stress from its sums
 ------------------------------------------------------------------------- */
 
@@ -438,31 +481,38 @@ template <class DeviceType> struct MCASyncRows {
    kernels: forward communication of the predictor values
 ------------------------------------------------------------------------- */
 
+// a stage sends a, then b (if nb == 1), then the ncols columns of c
 template <class DeviceType> struct MCAPackForward {
   typedef DeviceType device_type;
-  MCAKokkos::double_1d<DeviceType> a, b;    // b unused when stride is 1
+  MCAKokkos::double_1d<DeviceType> a, b;
+  MCAKokkos::double_2d<DeviceType> c;
   MCAKokkos::view_of<MCA_KK_SENDLIST_VIEW, DeviceType> list;
   MCAKokkos::view_of<MCA_KK_COMM_BUFFER, DeviceType> buf;
-  int iswap, stride;
+  int iswap, stride, nb, ncols;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     const int j = MCA_KK_SENDLIST(list, iswap, i);
-    buf(stride * i) = a(j);
-    if (stride == 2) buf(2 * i + 1) = b(j);
+    int m = stride * i;
+    buf(m++) = a(j);
+    if (nb) buf(m++) = b(j);
+    for (int k = 0; k < ncols; k++) buf(m++) = c(j, k);
   }
 };
 
 template <class DeviceType> struct MCAUnpackForward {
   typedef DeviceType device_type;
   MCAKokkos::double_1d<DeviceType> a, b;
+  MCAKokkos::double_2d<DeviceType> c;
   MCAKokkos::view_of<MCA_KK_COMM_BUFFER, DeviceType> buf;
-  int first, stride;
+  int first, stride, nb, ncols;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
-    a(first + i) = buf(stride * i);
-    if (stride == 2) b(first + i) = buf(2 * i + 1);
+    int m = stride * i;
+    a(first + i) = buf(m++);
+    if (nb) b(first + i) = buf(m++);
+    for (int k = 0; k < ncols; k++) c(first + i, k) = buf(m++);
   }
 };
 

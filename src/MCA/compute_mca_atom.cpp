@@ -29,9 +29,10 @@
 using namespace LAMMPS_NS;
 
 namespace {
-enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, SMEAN, SEQ, EEQ, LINKS, EPSP, PLASTIC_WORK, NKEYWORD };
-const char *const keywords[NKEYWORD] = {"sxx",   "syy", "szz", "sxy",   "sxz",  "syz",
-                                        "smean", "seq", "eeq", "links", "epsp", "plastic_work"};
+enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, SMEAN, SEQ, EEQ, LINKS, EPSP, PLASTIC_WORK, DAMAGE, NKEYWORD };
+const char *const keywords[NKEYWORD] = {"sxx",  "syy",          "szz",   "sxy", "sxz",
+                                        "syz",  "smean",        "seq",   "eeq", "links",
+                                        "epsp", "plastic_work", "damage"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -48,7 +49,7 @@ ComputeMCAAtom::ComputeMCAAtom(LAMMPS *lmp, int narg, char **arg) :
     if (k == NKEYWORD)
       error->all(FLERR,
                  "Unknown compute mca/atom keyword {} (allowed: sxx syy szz sxy sxz syz "
-                 "smean seq eeq links epsp plastic_work)",
+                 "smean seq eeq links epsp plastic_work damage)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -92,6 +93,7 @@ double ComputeMCAAtom::value(int i, int w)
   if (w == SEQ) return avec->seq[i];
   if (w == EEQ) return avec->eeq[i];
   if (w == EPSP) return avec->epsp[i];
+  if (w == DAMAGE) return avec->damage[i];
   if (w == PLASTIC_WORK) {
     const int offset = links->model.layout().atom_offset[MCAKernels::PART_PLASTICITY];
     return offset >= 0 ? links->atom_state[i][offset + MCAKernels::PA_WORK] : 0.0;
@@ -123,8 +125,10 @@ void ComputeMCAAtom::compute_peratom()
     }
   }
 
-  // the values of the last force evaluation (on a device for kk styles)
+  // the values of the last force evaluation (on a device for kk styles);
+  // the link states of the partner copies too (links break)
   avec->sync_host();
+  links->sync_rows();
   links->to_host();
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;

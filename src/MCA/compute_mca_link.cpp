@@ -46,11 +46,14 @@ enum {
   ENERGY,
   DISSIPATED,
   PLASTIC_WORK,
+  CAUSE,
+  BREAK_STEP,
+  RELEASED,
   NKEYWORD
 };
-const char *const keywords[NKEYWORD] = {"id1",    "id2",    "state",      "length",
-                                        "strain", "normal", "shear",      "area",
-                                        "force",  "energy", "dissipated", "plastic_work"};
+const char *const keywords[NKEYWORD] = {
+    "id1",   "id2",    "state",      "length",       "strain", "normal",     "shear",   "area",
+    "force", "energy", "dissipated", "plastic_work", "cause",  "break_step", "released"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -68,7 +71,8 @@ ComputeMCALink::ComputeMCALink(LAMMPS *lmp, int narg, char **arg) :
     if (k == NKEYWORD)
       error->all(FLERR,
                  "Unknown compute mca/link keyword {} (allowed: id1 id2 state length "
-                 "strain normal shear area force energy dissipated plastic_work)",
+                 "strain normal shear area force energy dissipated plastic_work cause break_step "
+                 "released)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -143,6 +147,9 @@ void ComputeMCALink::compute_local()
   // and the plasticity block: the elastic energy is the work of the link
   // forces less the plastic work
   const int plasticity = links->model.layout().link_offset[PART_PLASTICITY];
+  // and the fracture block
+  const int fracture = links->model.layout().link_offset[PART_FRACTURE];
+  // the rows of the lower IDs are current (links break in them)
   int row = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
@@ -159,7 +166,9 @@ void ComputeMCALink::compute_local()
       j = domain->closest_image(i, j);
       const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double r = sqrt(dot3(del, del));
-      const double sig = 0.5 * (h[H_LO + HALF_SIG] + h[H_HI + HALF_SIG]);
+      // a broken pair pushes only (mca_link_law.h)
+      double sig = 0.5 * (h[H_LO + HALF_SIG] + h[H_HI + HALF_SIG]);
+      if (broken(h)) sig = broken_traction(sig);
       double t[3];
       for (int k = 0; k < 3; k++) t[k] = 0.5 * (h[H_LO + HALF_T + k] + h[H_HI + HALF_T + k]);
       const double tau = sqrt(dot3(t, t));
@@ -204,6 +213,15 @@ void ComputeMCALink::compute_local()
             break;
           case PLASTIC_WORK:
             value = plastic_work;
+            break;
+          case CAUSE:
+            value = fracture >= 0 ? h[fracture + F_CAUSE] : 0.0;
+            break;
+          case BREAK_STEP:
+            value = (fracture >= 0 && broken(h)) ? h[fracture + F_STEP] : -1.0;
+            break;
+          case RELEASED:
+            value = fracture >= 0 ? h[fracture + F_RELEASED] : 0.0;
             break;
         }
         if (size_local_cols == 0)

@@ -18,6 +18,7 @@
 #ifndef LMP_MCA_LINK_LAW_H
 #define LMP_MCA_LINK_LAW_H
 
+#include "mca_fracture.h"
 #include "mca_geometry.h"
 #include "mca_link_layout.h"
 #include "mca_material.h"
@@ -113,7 +114,7 @@ namespace MCAKernels {
      its kernel in the link step below and its doc (Developer_mca.rst)
   ------------------------------------------------------------------------- */
 
-  enum LinkPart { PART_ELASTIC = 0, PART_DAMPING, PART_PLASTICITY, NPARTS };
+  enum LinkPart { PART_ELASTIC = 0, PART_DAMPING, PART_PLASTICITY, PART_FRACTURE, NPARTS };
 
   // the block of the damping part in a link row: the damping force on lo
   // of the last step (normal, tangential) and the energy the link's
@@ -127,6 +128,14 @@ namespace MCAKernels {
   // plastic strain is the atom style's epsp)
   enum PlasticitySlot { P_WORK_OLD = 0, P_WORK, P_SIZE };
   enum PlasticityAtomSlot { PA_WORK = 0, PA_SIZE };
+  // the block of the fracture part in a link row: the criterion that broke
+  // the link (BreakCriterion, 0 while intact), the step it broke at and
+  // the elastic energy it held then (released by the break); per
+  // automaton: the links it has forgotten (broken pairs that moved apart
+  // farther than the cutoff, dropped from its table), by criterion, and
+  // the energy their breaks released
+  enum FractureSlot { F_CAUSE = 0, F_STEP, F_RELEASED, F_SIZE };
+  enum FractureAtomSlot { FA_FORGOTTEN = 0, FA_RELEASED = FA_FORGOTTEN + NBREAK - 1, FA_SIZE };
   static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");
 
   struct MCALinkPartInfo {
@@ -141,6 +150,7 @@ namespace MCAKernels {
       {"elastic", "elastic", PART_ELASTIC, H_SIZE, A_SIZE, true},
       {"damping", "viscous", PART_DAMPING, D_SIZE, 0, false},
       {"plasticity", "mises", PART_PLASTICITY, P_SIZE, PA_SIZE, false},
+      {"fracture", "links", PART_FRACTURE, F_SIZE, FA_SIZE, false},
   };
   constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
   static_assert(MCA_LINK_PARTS[PART_ELASTIC].part == PART_ELASTIC,
@@ -544,6 +554,71 @@ namespace MCAKernels {
     const int damping = e.layout->link_offset[PART_DAMPING];
     if (damping >= 0) link_damping(hist + damping, e, m_lo, m_hi, mo, out);
     link_work_new(hist, block[P_WORK_OLD], mo, out);
+  }
+
+  /* ----------------------------------------------------------------------
+     fracture links: a link that meets its criterion breaks (the fracture
+     pass, after the step); from the next step on it is a broken pair that
+     carries compression only.  Its two halves keep their normal strain
+     and traction, which go on following the elastic normal law
+     (normal_traction: the Newton-3 split with the mean-stress term) as
+     "virtual" halves; the pair pushes with that traction while it is
+     compressive and with none while it is tensile, so contact is lost and
+     found again where the halves pass their stress-free length.  Shear
+     tractions and couples are dropped at the break (no friction before
+     the contact model).  A broken pair is not part of its automata's
+     stress, mean stress or plastic return (those are over links).
+  ------------------------------------------------------------------------- */
+
+  MCA_INLINE bool broken(const double *row)
+  {
+    return static_cast<int>(row[H_STATE]) == LINK_BROKEN;
+  }
+
+  // a link breaks: its elastic energy (less its plastic work) is released,
+  // shear tractions and couples are dropped
+  MCA_INLINE void break_link(double *hist, const MCALinkLayout &layout, int cause, double step)
+  {
+    const int plasticity = layout.link_offset[PART_PLASTICITY];
+    const double plastic_work = plasticity >= 0 ? hist[plasticity + P_WORK] : 0.0;
+    double *block = hist + layout.link_offset[PART_FRACTURE];
+    block[F_CAUSE] = cause;
+    block[F_STEP] = step;
+    block[F_RELEASED] = hist[H_WORK] - plastic_work;
+    hist[H_WORK] = plastic_work;
+    hist[H_STATE] = LINK_BROKEN;
+    for (int m = 0; m < 3; m++) {
+      hist[H_LO + HALF_T + m] = hist[H_HI + HALF_T + m] = 0.0;
+      hist[H_LO + HALF_COUPLE + m] = hist[H_HI + HALF_COUPLE + m] = 0.0;
+    }
+  }
+
+  // the pushing traction of a broken pair: the virtual normal traction
+  // where it is compressive
+  MCA_INLINE double broken_traction(double sig_virtual)
+  {
+    return sig_virtual < 0.0 ? sig_virtual : 0.0;
+  }
+
+  // one step of a broken pair (hist updated, as linked_pair)
+  MCA_FORCE_INLINE void broken_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
+                                    const MCAMaterial &mat_hi, MCALinkForces &out)
+  {
+    const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
+    MCALinkMotion mo;
+    link_motion(hist, e, out, mo);
+    mo.sig_old = broken_traction(mo.sig_old);
+    for (int m = 0; m < 3; m++) mo.dl[m] = 0.0;
+    normal_traction(hist, e, m_lo, m_hi, mo);
+    link_area(hist, e, m_lo, m_hi, out);
+    out.sig = broken_traction(0.5 * (hist[H_LO + HALF_SIG] + hist[H_HI + HALF_SIG]));
+    for (int m = 0; m < 3; m++) {
+      out.t[m] = out.couple[m] = 0.0;
+      out.f[m] = out.area * out.sig * out.n[m];
+      out.tq_lo[m] = out.tq_hi[m] = 0.0;    // a central force
+      out.trac[m] = out.sig * out.n[m];
+    }
+    link_work(hist, mo, out);
   }
 
 }    // namespace MCAKernels

@@ -106,11 +106,20 @@ namespace MCAKernels {
       const int j = d.partner(i, m);
       if (partner_evaluates(d, i, j)) continue;
       const double *h = d.history_row(i, m);
-      if (!linked(h)) continue;
       const double del[3] = {d.x(j, 0) - d.x(i, 0), d.x(j, 1) - d.x(i, 1), d.x(j, 2) - d.x(i, 2)};
       double nn[6], de_i, de_j;
-      link_prediction(h, del, d.tag(i) < d.tag(j), d.pred_stiffness(i), d.pred_stiffness(j), nn,
-                      de_i, de_j);
+      if (!linked(h)) {
+        // the face of a broken link stays in the fabric tensor with a
+        // traction of zero (a crack face): the stress of an automaton that
+        // lost links keeps a well-conditioned fit (the links left may all
+        // lie in a plane)
+        if (!broken(h)) continue;
+        link_direction(del, nn);
+        de_i = de_j = 0.0;
+      } else {
+        link_prediction(h, del, d.tag(i) < d.tag(j), d.pred_stiffness(i), d.pred_stiffness(j), nn,
+                        de_i, de_j);
+      }
       for (int k = 0; k < 6; k++) {
         sums.own(add, i, PS_FABRIC + k, nn[k]);
         sums.own(add, i, PS_STRAIN + k, de_i * nn[k]);
@@ -335,6 +344,126 @@ namespace MCAKernels {
       d.atom_state(i, d.layout.atom_offset[PART_PLASTICITY] + PA_WORK) +=
           d.volume(i) * ret.flow * ret.dep;
     }
+  }
+
+  /* ----------------------------------------------------------------------
+     fracture links (mca_fracture.h, mca_link_law.h): the broken pass
+     gives the force of the broken pairs automaton i evaluates (the same
+     ownership rule and sums as the link pass; no torque, no traction
+     moment: a broken pair is not part of the automata's stress); the
+     fracture pass, after the stress of the step is known (and sent to
+     the ghosts with the plastic strain), breaks the links i evaluates that
+     meet their criterion; the damage of i then counts its broken links.
+     The decision for a link is made once per owner from the same values
+     (its row and the automata's stress of this step), so every rank and
+     thread count breaks the same links
+  ------------------------------------------------------------------------- */
+
+  template <class D, class Sums, class Tally, class Totals>
+  MCA_FUNCTION void broken_pass_of(const D &d, const Sums &sums, const Tally &tally,
+                                   const MCALinkPassFlags &p, int i, Totals &totals)
+  {
+    auto add = sums.begin(i);
+    for (int m = 0; m < d.nlinks(i); m++) {
+      double *row = d.history_row(i, m);
+      if (D::row_state_first && !broken(row)) continue;
+      const int j = d.partner(i, m);
+      if (partner_evaluates(d, i, j)) continue;
+      if (!D::row_state_first && !broken(row)) continue;
+      const bool jlocal = j < d.nlocal;
+      const bool ilo = d.tag(i) < d.tag(j);
+      const int lo = ilo ? i : j, hi = ilo ? j : i;
+      double copy[MAX_ROW_SIZE];
+      double *h = row;
+      if (!p.commit) {
+        for (int k = 0; k < d.layout.row_size; k++) copy[k] = row[k];
+        h = copy;
+      }
+      MCALinkEnds e;
+      double scratch[12];
+      link_ends_of(d, lo, hi, p.dt, scratch, e);
+      MCALinkForces out;
+      broken_pair(h, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
+      double elastic_work = h[H_WORK];
+      const int plasticity = d.layout.link_offset[PART_PLASTICITY];
+      if (plasticity >= 0) elastic_work -= h[plasticity + P_WORK];
+      const double sign = ilo ? 1.0 : -1.0;
+      for (int k = 0; k < 3; k++) sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
+      if (jlocal) {
+        const auto to = sums.partner_of(add, j);
+        for (int k = 0; k < 3; k++) sums.partner(add, to, LS_FORCE + k, -out.f[k]);
+        if (p.commit && p.eager) {
+          double *partner_row = d.history_row(j, d.row(i, m));
+          for (int k = 0; k < d.layout.row_size; k++) partner_row[k] = row[k];
+        }
+      }
+      if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, elastic_work, out.f);
+    }
+  }
+
+  struct MCABreakFlags {
+    bool eager;        // bring a local partner's copy of the row up to date now
+    double step;       // the time step number, recorded by a break
+    double scatter;    // strength scatter w (0: none) and its seed
+    int seed;
+  };
+
+  template <class D> MCA_FUNCTION void fracture_pass_of(const D &d, const MCABreakFlags &p, int i)
+  {
+    for (int m = 0; m < d.nlinks(i); m++) {
+      double *row = d.history_row(i, m);
+      if (D::row_state_first && !linked(row)) continue;
+      const int j = d.partner(i, m);
+      if (partner_evaluates(d, i, j)) continue;
+      if (!D::row_state_first && !linked(row)) continue;
+      const bool ilo = d.tag(i) < d.tag(j);
+      const int lo = ilo ? i : j, hi = ilo ? j : i;
+      const MCABreakRule rule = d.break_rule(d.type(lo), d.type(hi));
+      if (rule.criterion == BREAK_NONE) continue;
+
+      // the link's tractions of this step (mean of the halves), its normal
+      // and half lengths, and the stress of its automata
+      double t[3], s_lo[6], s_hi[6];
+      MCABreakInput in;
+      in.n = row + H_NPREV;
+      in.sig = 0.5 * (row[H_LO + HALF_SIG] + row[H_HI + HALF_SIG]);
+      for (int k = 0; k < 3; k++) t[k] = 0.5 * (row[H_LO + HALF_T + k] + row[H_HI + HALF_T + k]);
+      in.t = t;
+      in.q_lo = row[H_Q0LO] * (1.0 + row[H_LO + HALF_EPS]);
+      in.q_hi = row[H_Q0HI] * (1.0 + row[H_HI + HALF_EPS]);
+      for (int k = 0; k < 6; k++) {
+        s_lo[k] = d.stress(lo, k);
+        s_hi[k] = d.stress(hi, k);
+      }
+      in.s_lo = s_lo;
+      in.s_hi = s_hi;
+      in.epsp_lo = d.epsp(lo);
+      in.epsp_hi = d.epsp(hi);
+      in.shear_lo = d.material(d.type(lo)).shear;
+      in.shear_hi = d.material(d.type(hi)).shear;
+      const double index = failure_index(rule, in);
+      if (!(index >= strength_factor(p.scatter, p.seed, d.tag(lo), d.tag(hi)))) continue;
+
+      break_link(row, d.layout, rule.criterion, p.step);
+      if (j < d.nlocal && p.eager) {
+        double *partner_row = d.history_row(j, d.row(i, m));
+        for (int k = 0; k < d.layout.row_size; k++) partner_row[k] = row[k];
+      }
+    }
+  }
+
+  // damage of automaton i: the fraction of its links that are broken,
+  // counting those it has forgotten
+  template <class D> MCA_FUNCTION void damage_of(const D &d, int i)
+  {
+    int nbroken = 0;
+    for (int m = 0; m < d.nlinks(i); m++)
+      if (broken(current_row(d, i, m))) nbroken++;
+    const int fa = d.layout.atom_offset[PART_FRACTURE];
+    double forgotten = 0.0;
+    for (int c = 0; c < NBREAK - 1; c++) forgotten += d.atom_state(i, fa + FA_FORGOTTEN + c);
+    const double total = d.nlinks(i) + forgotten;
+    d.damage(i) = total > 0.0 ? (nbroken + forgotten) / total : 0.0;
   }
 
   // forces and torques of automaton i from its link sums

@@ -48,6 +48,8 @@ static constexpr double RESTART_NAMED_MATERIALS = -2.0;
 static constexpr double RESTART_NAMED_PARTS = -3.0;
 // then the hardening tables after the materials
 static constexpr double RESTART_HARDENING = -4.0;
+// then the fracture rules after the linking rules
+static constexpr double RESTART_FRACTURE = -5.0;
 
 PairMCA::HostData PairMCA::host_data()
 {
@@ -74,6 +76,9 @@ PairMCA::HostData PairMCA::host_data()
   d.volume_ = avec->volume;
   d.return_scale_ = return_scale;
   d.return_smean_ = return_smean;
+  d.break_rules_ = break_rules.data();
+  d.break_stride = atom->ntypes + 1;
+  d.damage_ = avec->damage;
   return d;
 }
 
@@ -91,7 +96,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   manybody_flag = 1;
   no_virial_fdotr_compute = 1;
   centroidstressflag = CENTROID_NOTAVAIL;
-  comm_forward = 2;
+  comm_forward = 7;    // the largest stage: stress and plastic strain
   writedata = 0;
 
   tolerance_default = 0.02;
@@ -100,6 +105,9 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   comm_stage = STAGE_COUNT;
   restart_named = 0;
   restart_tables = 0;
+  restart_fracture = 0;
+  break_scatter = 0.0;
+  break_seed = 0;
   select_parts({});
 }
 
@@ -128,6 +136,7 @@ void PairMCA::allocate()
   memory->create(link_allowed, n, n, "pair:link_allowed");
   memory->create(link_tolerance, n, n, "pair:link_tolerance");
   materials.allocate(atom->ntypes);
+  break_rules.assign(n * n, MCABreakRule{BREAK_NONE, 0.0, 0.0});
   for (int i = 0; i < n; i++) {
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
@@ -161,6 +170,19 @@ void PairMCA::settings(int narg, char **arg)
       cutoff_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (cutoff_user <= 0.0)
         error->all(FLERR, "Pair style mca cutoff must be > 0, got {}", arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "scatter") == 0) {
+      // scatter w seed: strength factors of the links uniform in [1 - w, 1 + w]
+      if (iarg + 3 > narg)
+        utils::missing_cmd_args(FLERR, "pair_style mca scatter (width seed)", error);
+      break_scatter = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (break_scatter < 0.0 || break_scatter >= 1.0)
+        error->all(FLERR, "Pair style mca scatter width must be in [0, 1), got {}", arg[iarg + 1]);
+      break_seed = utils::inumeric(FLERR, arg[iarg + 2], false, lmp);
+      if (break_seed <= 0)
+        error->all(FLERR, "Pair style mca scatter seed must be a positive integer, got {}",
+                   arg[iarg + 2]);
+      iarg += 3;
+      continue;
     } else if (const char *slot = link_slot(arg[iarg])) {
       // <slot> <part>: the part of the link law for that slot
       if (iarg + 2 > narg)
@@ -179,7 +201,8 @@ void PairMCA::settings(int narg, char **arg)
       for (const auto &p : MCA_LINK_PARTS)
         if (slots.find(p.slot) == std::string::npos) slots += std::string(", ") + p.slot;
       error->all(FLERR,
-                 "Unknown pair_style mca keyword {} (allowed: tolerance, capacity, cutoff{})",
+                 "Unknown pair_style mca keyword {} (allowed: tolerance, capacity, cutoff, "
+                 "scatter{})",
                  arg[iarg], slots);
     }
     iarg += 2;
@@ -192,6 +215,11 @@ bool PairMCA::plastic() const
   return model.layout().link_offset[PART_PLASTICITY] >= 0;
 }
 
+bool PairMCA::fractured() const
+{
+  return model.layout().link_offset[PART_FRACTURE] >= 0;
+}
+
 // a parameter without its part of the link law, or a part without its
 // parameter, is most likely a mistake of the input: say so
 void PairMCA::check_parts()
@@ -200,7 +228,20 @@ void PairMCA::check_parts()
   for (int t = 1; t <= atom->ntypes; t++) any_eta = any_eta || materials.type[t].viscosity > 0.0;
   const bool damped = model.layout().link_offset[PART_DAMPING] >= 0;
   const bool any_yield = materials.any_plastic();
+  bool any_break = false;
+  for (const auto &rule : break_rules) any_break = any_break || rule.criterion != BREAK_NONE;
   if (comm->me != 0) return;
+  if (fractured() && !any_break)
+    error->warning(FLERR,
+                   "Pair mca: fracture links without a break criterion for any pair of atom "
+                   "types breaks nothing (give 'break' in pair_coeff)");
+  if (!fractured() && any_break)
+    error->warning(FLERR,
+                   "Pair mca: a break criterion is given but the link model has no fracture "
+                   "part: add 'fracture links' to pair_style mca to use it");
+  if (!fractured() && break_scatter > 0.0)
+    error->warning(FLERR,
+                   "Pair mca: scatter has no effect without 'fracture links' in pair_style mca");
   if (damped && !any_eta)
     error->warning(FLERR,
                    "Pair mca: damping viscous with eta = 0 for every atom type damps nothing "
@@ -263,7 +304,10 @@ void PairMCA::coeff(int narg, char **arg)
     if (iarg + 2 > narg)
       utils::missing_cmd_args(FLERR, std::string("pair_coeff ") + arg[iarg], error);
     const std::string key = arg[iarg];
-    if (key == "hardening" && strcmp(arg[iarg + 1], "table") == 0) {
+    if (key == "break") {
+      parse_break(ilo, ihi, jlo, jhi, narg, arg, iarg);
+      continue;
+    } else if (key == "hardening" && strcmp(arg[iarg + 1], "table") == 0) {
       if (iarg + 4 > narg)
         utils::missing_cmd_args(FLERR, "pair_coeff hardening table (file keyword)", error);
       materials.read_hardening_table(arg[iarg + 2], arg[iarg + 3], material);
@@ -282,7 +326,8 @@ void PairMCA::coeff(int narg, char **arg)
       if (tol < 0.0 || tol >= 0.5)
         error->all(FLERR, "Pair mca: link tolerance must be in [0, 0.5), got {}", tol);
     } else {
-      error->all(FLERR, "Unknown pair_coeff keyword {} for pair mca (allowed: {} link tolerance)",
+      error->all(FLERR,
+                 "Unknown pair_coeff keyword {} for pair mca (allowed: {} link tolerance break)",
                  key, materials.keyword_list());
     }
     iarg += 2;
@@ -308,6 +353,54 @@ void PairMCA::coeff(int narg, char **arg)
     }
   }
   if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J ... break none | strain eps_u | stress sigma_u |
+                            drucker_prager sigma_t sigma_c | elliptic sigma0 tau0
+   the criterion of every type pair in the ranges (symmetric)
+------------------------------------------------------------------------- */
+
+void PairMCA::parse_break(int ilo, int ihi, int jlo, int jhi, int narg, char **arg, int &iarg)
+{
+  static const char *const names[NBREAK] = {"none", "strain", "stress", "drucker_prager",
+                                            "elliptic"};
+  static const int nparams[NBREAK] = {0, 1, 1, 2, 2};
+  const std::string allowed =
+      "none, strain eps_u, stress sigma_u, drucker_prager sigma_t sigma_c, elliptic sigma0 tau0";
+  MCABreakRule rule{BREAK_NONE, 0.0, 0.0};
+  int c = 0;
+  while (c < NBREAK && strcmp(arg[iarg + 1], names[c]) != 0) c++;
+  if (c == NBREAK)
+    error->all(FLERR, "Pair mca: unknown break criterion {} (allowed: {})", arg[iarg + 1], allowed);
+  if (iarg + 2 + nparams[c] > narg)
+    utils::missing_cmd_args(FLERR, std::string("pair_coeff break ") + names[c], error);
+  rule.criterion = c;
+  if (nparams[c] > 0) rule.p1 = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+  if (nparams[c] > 1) rule.p2 = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+  const double big = 1.0e300;
+  if (c == BREAK_STRAIN && !(rule.p1 > 0.0 && rule.p1 < big))
+    error->all(FLERR, "Pair mca: break strain eps_u must be > 0, got {}", arg[iarg + 2]);
+  if (c == BREAK_STRESS && !(rule.p1 > 0.0 && rule.p1 < big))
+    error->all(FLERR, "Pair mca: break stress sigma_u must be > 0, got {}", arg[iarg + 2]);
+  if (c == BREAK_DRUCKER_PRAGER) {
+    if (!(rule.p1 > 0.0 && rule.p1 < big))
+      error->all(FLERR, "Pair mca: break drucker_prager sigma_t must be > 0, got {}",
+                 arg[iarg + 2]);
+    if (!(rule.p2 >= rule.p1 && rule.p2 < big))
+      error->all(FLERR, "Pair mca: break drucker_prager sigma_c must be >= sigma_t ({}), got {}",
+                 rule.p1, arg[iarg + 3]);
+  }
+  if (c == BREAK_ELLIPTIC) {
+    if (!(rule.p1 > 0.0 && rule.p1 < big))
+      error->all(FLERR, "Pair mca: break elliptic sigma0 must be > 0, got {}", arg[iarg + 2]);
+    if (!(rule.p2 > 0.0 && rule.p2 < big))
+      error->all(FLERR, "Pair mca: break elliptic tau0 must be > 0, got {}", arg[iarg + 3]);
+  }
+  const int n = atom->ntypes + 1;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = jlo; j <= jhi; j++) break_rules[i * n + j] = break_rules[j * n + i] = rule;
+  iarg += 2 + nparams[c];
 }
 
 /* ---------------------------------------------------------------------- */
@@ -542,9 +635,9 @@ void PairMCA::compute(int eflag, int vflag)
   grow_peratom();
 
   // link states (and so the predictor stiffness, sent to the ghost atoms)
-  // change only when the partners are found again in the elastic model: a
-  // part that breaks links must count again when it does
-  if (refresh_partners()) count_links();
+  // change only when the partners are found again, or where links break
+  if (fractured() && partners_outdated()) forget_broken_links();
+  if (refresh_partners() || fractured()) count_links();
 
   predict_mean_stress();
 
@@ -589,12 +682,85 @@ void PairMCA::compute(int eflag, int vflag)
     for (int i = 0; i < d.nlocal; i++)
       link_pass_of<LAW_PLASTIC_SETUP>(d, sums, tally, p, i, totals);
   }
+  // broken pairs: their compressive force only
+  if (fractured())
+    for (int i = 0; i < d.nlocal; i++) broken_pass_of(d, sums, tally, p, i, totals);
   if (p.commit && lazy) partner_rows_stale = 1;
 
   for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, bmat[i], p.commit);
 
+  // fracture: the links that meet their criterion with the stress of this
+  // step break (from the next step on they are broken pairs)
+  if (fractured()) {
+    if (p.commit) {
+      comm_stage = STAGE_BREAK;
+      MCACompat::forward_comm(comm, this);
+      const MCABreakFlags b = break_flags(p.eager);
+      for (int i = 0; i < d.nlocal; i++) fracture_pass_of(d, b, i);
+    }
+    for (int i = 0; i < d.nlocal; i++) damage_of(d, i);
+  }
+
   nstretched = totals.nlong;
   if (neighbor->ago == 0) stretched_warning();
+}
+
+/* ----------------------------------------------------------------------
+   fracture: what the fracture pass needs besides the data
+------------------------------------------------------------------------- */
+
+MCABreakFlags PairMCA::break_flags(bool eager) const
+{
+  MCABreakFlags b;
+  b.eager = eager;
+  b.step = static_cast<double>(update->ntimestep);
+  b.scatter = break_scatter;
+  b.seed = break_seed;
+  return b;
+}
+
+/* ----------------------------------------------------------------------
+   a broken pair whose automata are farther apart than the cutoff (at the
+   last step) is dropped from both automata's tables at reneighboring,
+   before the partners are looked up: its partner may soon leave the ghost
+   atoms.  Both owners decide from identical copies of the row (the
+   partner copies are in sync at reneighboring), each keeps what the link
+   counted for (criterion, released energy) in its law state.  (A pair
+   that comes close again interacts only through a contact model.)
+------------------------------------------------------------------------- */
+
+void PairMCA::forget_broken_links()
+{
+  links->sync_rows();
+  links->to_host();
+  const int fa = model.layout().atom_offset[PART_FRACTURE];
+  const int ff = model.layout().link_offset[PART_FRACTURE];
+  const int row_size = links->row_size;
+  bool changed = false;
+  for (int i = 0; i < atom->nlocal; i++) {
+    int &n = links->nlinks[i];
+    double *state = links->atom_state[i];
+    for (int m = n - 1; m >= 0; m--) {
+      double *row = &links->history[i][m * row_size];
+      if (!broken(row) || row[H_RPREV] <= cut_global) continue;
+      const int cause = static_cast<int>(row[ff + F_CAUSE]);
+      if (cause > BREAK_NONE && cause < NBREAK) state[fa + FA_FORGOTTEN + cause - 1] += 1.0;
+      state[fa + FA_RELEASED] += row[ff + F_RELEASED];
+      // the last row takes its place
+      const int last = n - 1;
+      if (m != last) {
+        links->partner[i][m] = links->partner[i][last];
+        const double *from = &links->history[i][last * row_size];
+        for (int k = 0; k < row_size; k++) row[k] = from[k];
+      }
+      n--;
+      changed = true;
+    }
+  }
+  if (changed) {
+    links->host_changed();
+    cache_nlocal = -1;    // the row indices of the partners changed
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -602,7 +768,12 @@ void PairMCA::compute(int eflag, int vflag)
 int PairMCA::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
-  if (comm_stage == STAGE_COUNT) {
+  if (comm_stage == STAGE_BREAK) {
+    for (int i = 0; i < n; i++) {
+      buf[m++] = avec->epsp[list[i]];
+      for (int k = 0; k < 6; k++) buf[m++] = avec->stress[list[i]][k];
+    }
+  } else if (comm_stage == STAGE_COUNT) {
     for (int i = 0; i < n; i++) buf[m++] = pred_stiffness[list[i]];
   } else if (comm_stage == STAGE_RETURN) {
     for (int i = 0; i < n; i++) {
@@ -624,7 +795,12 @@ void PairMCA::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
   const int last = first + n;
-  if (comm_stage == STAGE_COUNT) {
+  if (comm_stage == STAGE_BREAK) {
+    for (int i = first; i < last; i++) {
+      avec->epsp[i] = buf[m++];
+      for (int k = 0; k < 6; k++) avec->stress[i][k] = buf[m++];
+    }
+  } else if (comm_stage == STAGE_COUNT) {
     for (int i = first; i < last; i++) pred_stiffness[i] = buf[m++];
   } else if (comm_stage == STAGE_RETURN) {
     for (int i = first; i < last; i++) {
@@ -655,6 +831,17 @@ void PairMCA::write_restart(FILE *fp)
       fwrite(&link_tolerance[i][j], sizeof(double), 1, fp);
     }
   }
+  // fracture rules
+  fwrite(&break_scatter, sizeof(double), 1, fp);
+  fwrite(&break_seed, sizeof(int), 1, fp);
+  const int n = atom->ntypes + 1;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      const MCABreakRule &rule = break_rules[i * n + j];
+      fwrite(&rule.criterion, sizeof(int), 1, fp);
+      fwrite(&rule.p1, sizeof(double), 1, fp);
+      fwrite(&rule.p2, sizeof(double), 1, fp);
+    }
 }
 
 /* ----------------------------------------------------------------------
@@ -691,13 +878,34 @@ void PairMCA::read_restart(FILE *fp)
       MPI_Bcast(&link_tolerance[i][j], 1, MPI_DOUBLE, 0, world);
     }
   }
+  if (!restart_fracture) return;
+  if (me == 0) {
+    utils::sfread(FLERR, &break_scatter, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &break_seed, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&break_scatter, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&break_seed, 1, MPI_INT, 0, world);
+  const int n = atom->ntypes + 1;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      MCABreakRule rule;
+      if (me == 0) {
+        utils::sfread(FLERR, &rule.criterion, sizeof(int), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &rule.p1, sizeof(double), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &rule.p2, sizeof(double), 1, fp, nullptr, error);
+      }
+      MPI_Bcast(&rule.criterion, 1, MPI_INT, 0, world);
+      MPI_Bcast(&rule.p1, 1, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&rule.p2, 1, MPI_DOUBLE, 0, world);
+      break_rules[i * n + j] = break_rules[j * n + i] = rule;
+    }
 }
 
 /* ---------------------------------------------------------------------- */
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
-  fwrite(&RESTART_HARDENING, sizeof(double), 1, fp);
+  fwrite(&RESTART_FRACTURE, sizeof(double), 1, fp);
   fwrite(&tolerance_default, sizeof(double), 1, fp);
   fwrite(&cutoff_user, sizeof(double), 1, fp);
   fwrite(&capacity_user, sizeof(int), 1, fp);
@@ -715,7 +923,8 @@ void PairMCA::read_restart_settings(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  restart_tables = (first == RESTART_HARDENING);
+  restart_fracture = (first == RESTART_FRACTURE);
+  restart_tables = restart_fracture || (first == RESTART_HARDENING);
   const bool named_parts = restart_tables || (first == RESTART_NAMED_PARTS);
   restart_named = named_parts || (first == RESTART_NAMED_MATERIALS);
   if (!restart_named && first < 0.0)

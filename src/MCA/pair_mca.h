@@ -20,6 +20,7 @@ PairStyle(mca,PairMCA);
 #ifndef LMP_PAIR_MCA_H
 #define LMP_PAIR_MCA_H
 
+#include "mca_link_passes.h"
 #include "mca_materials.h"
 #include "pair_mca_linked.h"
 
@@ -59,6 +60,12 @@ class PairMCA : public PairMCALinked {
   int **link_allowed;
   double **link_tolerance;
 
+  // fracture links: the criterion of each type pair ((ntypes + 1)^2,
+  // symmetric), the strength scatter and its seed
+  std::vector<MCAKernels::MCABreakRule> break_rules;
+  double break_scatter;
+  int break_seed;
+
   double tolerance_default;    // relative distance tolerance for links
   double cutoff_user;          // pair cutoff given by the user, else < 0
 
@@ -76,10 +83,12 @@ class PairMCA : public PairMCALinked {
   void destroy_peratom();
   // what the forward communication sends: the predictor stiffness, the
   // mean-stress increment and prediction, or the return of the automata
-  enum CommStage { STAGE_COUNT, STAGE_MEAN, STAGE_RETURN };
+  // or (fracture) the stress and plastic strain of the step
+  enum CommStage { STAGE_COUNT, STAGE_MEAN, STAGE_RETURN, STAGE_BREAK };
   int comm_stage;
-  int restart_named;     // the restart file being read names its material keywords
-  int restart_tables;    // and holds hardening tables
+  int restart_named;       // the restart file being read names its material keywords
+  int restart_tables;      // and holds hardening tables
+  int restart_fracture;    // and fracture rules
 
   class MCAAtomFields *avec;
 
@@ -93,6 +102,12 @@ class PairMCA : public PairMCALinked {
   void select_parts(const std::vector<std::string> &chosen);
   void check_parts();
   bool plastic() const;
+  bool fractured() const;
+  void parse_break(int ilo, int ihi, int jlo, int jhi, int narg, char **arg, int &iarg);
+  // drop broken pairs farther apart than the cutoff from the link tables
+  // (at reneighboring, before the partners are found again)
+  void forget_broken_links();
+  MCAKernels::MCABreakFlags break_flags(bool eager) const;
 
   struct HostData;
   struct HostSums;

@@ -34,6 +34,10 @@ struct PairMCA::HostData : MCAHostLinks {
   // plasticity
   const MCAKernels::MCAHardening *hardening_;
   double *epsp_, *volume_, *return_scale_, *return_smean_;
+  // fracture: rules by type pair (row stride ntypes + 1), damage
+  const MCAKernels::MCABreakRule *break_rules_;
+  int break_stride;
+  double *damage_;
 
   double x(int i, int k) const { return x_[i][k]; }
   const double *x_row(int i, double *) const { return x_[i]; }
@@ -57,6 +61,11 @@ struct PairMCA::HostData : MCAHostLinks {
   double volume(int i) const { return volume_[i]; }
   double &return_scale(int i) const { return return_scale_[i]; }
   double &return_smean(int i) const { return return_smean_[i]; }
+  const MCAKernels::MCABreakRule &break_rule(int ti, int tj) const
+  {
+    return break_rules_[ti * break_stride + tj];
+  }
+  double &damage(int i) const { return damage_[i]; }
 };
 
 // per-automaton sums in plain arrays (predictor: PS_* columns), added in
