@@ -196,3 +196,31 @@ def relative_difference(a, b):
     b = np.asarray(b, dtype=float)
     scale = max(np.max(np.abs(a)), np.max(np.abs(b)))
     return 0.0 if scale == 0.0 else float(np.max(np.abs(a - b)) / scale)
+
+
+# a 4a fcc cube of 365 automata (R = 0.254 m) written to cube.data: one data
+# file gives the same atom IDs on any number of ranks (the consistency tests
+# of plasticity and fracture pull it between grips)
+FCC_CUBE_DATA = """
+units           si
+atom_style      mca
+atom_modify     map array sort 0 0
+boundary        f f f
+lattice         fcc 0.7184
+region          box block -0.1 4.1 -0.1 4.1 -0.1 4.1 units lattice
+create_box      1 box
+create_atoms    1 region box
+mca_set         all packing fcc radius 0.254
+write_data      cube.data
+"""
+
+
+def field_difference(a, b, fields, force_scale):
+    """Largest difference of each field of two dumps sorted alike (fields:
+    (name, column slice) pairs) over its scale: force_scale for the forces
+    ("f"), else the largest magnitude of the field in a."""
+    out = {}
+    for name, cols in fields:
+        scale = force_scale if name == "f" else max(np.abs(a[:, cols]).max(), 1e-300)
+        out[name] = np.abs(a[:, cols] - b[:, cols]).max() / scale
+    return out

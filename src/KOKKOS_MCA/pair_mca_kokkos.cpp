@@ -378,10 +378,18 @@ template <class DeviceType> int PairMCAKokkos<DeviceType>::chunks() const
   return (atom->nlocal + chunk_size - 1) / chunk_size;
 }
 
+/* ----------------------------------------------------------------------
+   a kernel over the links with the link sums and the energy tally: the
+   link pass of a law (MCALinkPassOf<Law>::type) or the broken pass
+   (MCABrokenPass); its energy and virial are added to sums
+------------------------------------------------------------------------- */
+
 template <class DeviceType>
 template <class Pass>
-void PairMCAKokkos<DeviceType>::link_pass(Pass &pass, bool commit, bool lazy, MCALinkSums &sums)
+void PairMCAKokkos<DeviceType>::run_link_kernel(Pass &pass, bool commit, bool lazy,
+                                                MCALinkSums &sums)
 {
+  pass.d = views();
   pass.flags.commit = commit;
   pass.flags.eager = !lazy;
   pass.tally.eflag_global = eflag_global;
@@ -391,43 +399,39 @@ void PairMCAKokkos<DeviceType>::link_pass(Pass &pass, bool commit, bool lazy, MC
   // spins turn the automata only in steps of a run (see PairMCA::compute)
   pass.flags.dt = commit ? update->dt : 0.0;
   pass.flags.cutsq = cut_global * cut_global;
+  // (a reduction sets its result)
+  MCALinkSums kernel_sums;
   if (need_dup()) {
     MCAChunkedReduce<Pass> chunked;
     chunked.pass = pass;
     chunked.nlocal = atom->nlocal;
     chunked.chunk_size = chunk_size;
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, chunks()), chunked, sums);
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, chunks()), chunked, kernel_sums);
   } else {
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), pass, sums);
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), pass, kernel_sums);
   }
+  sums += kernel_sums;
 }
 
-/* ----------------------------------------------------------------------
-   the link pass with its sums (Law: LinkPassLaw of mca_link_passes.h)
-------------------------------------------------------------------------- */
-
 template <class DeviceType>
-template <int Law>
-void PairMCAKokkos<DeviceType>::link_passes(bool commit, bool lazy, MCALinkSums &sums)
+template <template <class, class, class> class Pass>
+void PairMCAKokkos<DeviceType>::link_kernel(bool commit, bool lazy, MCALinkSums &sums)
 {
   const bool atom_tally = eflag_atom || vflag_atom;
-  const MCAPairViews<DeviceType> d = views();
   if (need_dup()) {
     if (atom_tally) dup_tally.reset();
-    MCALinkPass<DeviceType, MCAChunkSums<DeviceType>, dup_type, Law> pass;
-    pass.d = d;
+    Pass<DeviceType, MCAChunkSums<DeviceType>, dup_type> pass;
     pass.sums.sums = d_link_sums;
     pass.sums.copies = d_link_copies;
     pass.sums.chunk_size = chunk_size;
     pass.tally.tally = dup_tally;
-    link_pass(pass, commit, lazy, sums);
+    run_link_kernel(pass, commit, lazy, sums);
     if (atom_tally) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
   } else {
-    MCALinkPass<DeviceType, MCADirectSums<DeviceType>, direct_type, Law> pass;
-    pass.d = d;
+    Pass<DeviceType, MCADirectSums<DeviceType>, direct_type> pass;
     pass.sums.sums = direct_type(d_link_sums);
     pass.tally.tally = direct_type(d_atom_tally);
-    link_pass(pass, commit, lazy, sums);
+    run_link_kernel(pass, commit, lazy, sums);
   }
 }
 
@@ -472,49 +476,23 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool 
 }
 
 /* ----------------------------------------------------------------------
-   fracture: the force of the broken pairs, added to the link sums; after
-   the stress of the step, the links that break and the damage (see
-   PairMCA::compute())
+   fracture, after the stress of the step: the links that break and the
+   damage (see PairMCA::compute())
 ------------------------------------------------------------------------- */
-
-template <class DeviceType>
-void PairMCAKokkos<DeviceType>::broken_passes(bool commit, bool lazy, MCALinkSums &sums)
-{
-  const MCAPairViews<DeviceType> d = views();
-  // (a reduction sets its result: the link pass's is added after)
-  MCALinkSums link_sums = sums;
-  if (need_dup()) {
-    if (eflag_atom || vflag_atom) dup_tally.reset();
-    MCABrokenPass<DeviceType, MCAChunkSums<DeviceType>, dup_type> pass;
-    pass.d = d;
-    pass.sums.sums = d_link_sums;
-    pass.sums.copies = d_link_copies;
-    pass.sums.chunk_size = chunk_size;
-    pass.tally.tally = dup_tally;
-    link_pass(pass, commit, lazy, sums);
-    if (eflag_atom || vflag_atom) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
-  } else {
-    MCABrokenPass<DeviceType, MCADirectSums<DeviceType>, direct_type> pass;
-    pass.d = d;
-    pass.sums.sums = direct_type(d_link_sums);
-    pass.tally.tally = direct_type(d_atom_tally);
-    link_pass(pass, commit, lazy, sums);
-  }
-  sums += link_sums;
-}
 
 template <class DeviceType> void PairMCAKokkos<DeviceType>::fracture(bool commit, bool lazy)
 {
   const int nlocal = atom->nlocal;
+  const MCAPairViews<DeviceType> d = views();
   if (commit) {
     forward_comm_stage(STAGE_BREAK);
     MCAFracturePass<DeviceType> pass;
-    pass.d = views();
+    pass.d = d;
     pass.flags = break_flags(!lazy);
     Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass);
   }
   MCADamagePass<DeviceType> damage;
-  damage.d = views();
+  damage.d = d;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), damage);
 }
 
@@ -570,15 +548,16 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   const MCAPairViews<DeviceType> d = views();
   MCALinkSums sums;
   if (!plastic()) {
-    link_passes<LAW_ELASTIC>(commit, lazy, sums);
+    link_kernel<MCALinkPassOf<LAW_ELASTIC>::template type>(commit, lazy, sums);
   } else if (commit) {
     plastic_return(commit);
-    link_passes<LAW_PLASTIC>(commit, lazy, sums);
+    link_kernel<MCALinkPassOf<LAW_PLASTIC>::template type>(commit, lazy, sums);
   } else {
     // a setup returns no automaton (see PairMCA::compute())
-    link_passes<LAW_PLASTIC_SETUP>(commit, lazy, sums);
+    link_kernel<MCALinkPassOf<LAW_PLASTIC_SETUP>::template type>(commit, lazy, sums);
   }
-  if (fractured()) broken_passes(commit, lazy, sums);
+  // broken pairs: their compressive force only
+  if (fractured()) link_kernel<MCABrokenPass>(commit, lazy, sums);
 
   MCALinkFinish<DeviceType> finish;
   finish.d = d;

@@ -116,10 +116,11 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   dup_type dup_tally;
   bool need_dup() const;
   int chunks() const;
-  template <class Pass> void link_pass(Pass &, bool commit, bool lazy, struct MCALinkSums &);
-  template <int Law> void link_passes(bool commit, bool lazy, struct MCALinkSums &);
+  template <class Pass> void run_link_kernel(Pass &, bool commit, bool lazy, struct MCALinkSums &);
+  // a kernel over the links with the link sums: Pass<DeviceType, Sums, TallyScatter>
+  template <template <class, class, class> class Pass>
+  void link_kernel(bool commit, bool lazy, struct MCALinkSums &);
   void plastic_return(bool commit);
-  void broken_passes(bool commit, bool lazy, struct MCALinkSums &);
   void fracture(bool commit, bool lazy);
   // the per-atom values a stage communicates: a, b (or none), the columns
   // of c (or none)

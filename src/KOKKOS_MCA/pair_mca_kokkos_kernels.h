@@ -380,6 +380,13 @@ template <class DeviceType, class Sums, class TallyScatter, int Law> struct MCAL
   }
 };
 
+// the link pass of a law as a template of (device, sums, tally), as
+// MCABrokenPass (PairMCAKokkos::link_kernel)
+template <int Law> struct MCALinkPassOf {
+  template <class DeviceType, class Sums, class TallyScatter>
+  using type = MCALinkPass<DeviceType, Sums, TallyScatter, Law>;
+};
+
 /* ----------------------------------------------------------------------
    kernels of a model with plasticity: the elastic trial of the links
    (their traction moment B in the LS_BMAT columns of the link sums),

@@ -144,9 +144,6 @@ void ComputeMCALink::compute_local()
   const int ncols = MAX(size_local_cols, 1);
   // the damping block, if the link model has one
   const int damping = links->model.layout().link_offset[PART_DAMPING];
-  // and the plasticity block: the elastic energy is the work of the link
-  // forces less the plastic work
-  const int plasticity = links->model.layout().link_offset[PART_PLASTICITY];
   // and the fracture block
   const int fracture = links->model.layout().link_offset[PART_FRACTURE];
   // the rows of the lower IDs are current (links break in them)
@@ -174,7 +171,8 @@ void ComputeMCALink::compute_local()
       const double tau = sqrt(dot3(t, t));
       const double area = h[H_APREV];
       const double dissipated = damping >= 0 ? h[damping + D_WORK] : 0.0;
-      const double plastic_work = plasticity >= 0 ? h[plasticity + P_WORK] : 0.0;
+      // the elastic energy is the work of the link forces less the plastic work
+      const double plastic_work = link_plastic_work(h, links->model.layout());
       for (int c = 0; c < ncols; c++) {
         double value = 0.0;
         switch (which[c]) {

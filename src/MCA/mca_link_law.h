@@ -575,12 +575,19 @@ namespace MCAKernels {
     return static_cast<int>(row[H_STATE]) == LINK_BROKEN;
   }
 
+  // the plastic work of a link (0 in a model without plasticity): its
+  // elastic energy is the work of its forces, H_WORK, less this
+  MCA_INLINE double link_plastic_work(const double *hist, const MCALinkLayout &layout)
+  {
+    const int plasticity = layout.link_offset[PART_PLASTICITY];
+    return plasticity >= 0 ? hist[plasticity + P_WORK] : 0.0;
+  }
+
   // a link breaks: its elastic energy (less its plastic work) is released,
   // shear tractions and couples are dropped
   MCA_INLINE void break_link(double *hist, const MCALinkLayout &layout, int cause, double step)
   {
-    const int plasticity = layout.link_offset[PART_PLASTICITY];
-    const double plastic_work = plasticity >= 0 ? hist[plasticity + P_WORK] : 0.0;
+    const double plastic_work = link_plastic_work(hist, layout);
     double *block = hist + layout.link_offset[PART_FRACTURE];
     block[F_CAUSE] = cause;
     block[F_STEP] = step;

@@ -77,6 +77,29 @@ namespace MCAKernels {
     return static_cast<int>(row[H_STATE]) == LINK_LINKED;
   }
 
+  // does automaton i evaluate its link m, in the state State (LinkState)?
+  // row: the link's row, j: the partner.  On a
+  // CPU the row's state is read first: its load then overlaps the others.
+  // On a GPU it is read only for the links this thread evaluates (a load
+  // of a link the partner evaluates is wasted traffic)
+  template <int State, class D>
+  MCA_FORCE_INLINE bool evaluates(const D &d, int i, int m, double *&row, int &j)
+  {
+    row = d.history_row(i, m);
+    if (D::row_state_first && static_cast<int>(row[H_STATE]) != State) return false;
+    j = d.partner(i, m);
+    if (partner_evaluates(d, i, j)) return false;
+    if (!D::row_state_first && static_cast<int>(row[H_STATE]) != State) return false;
+    return true;
+  }
+
+  // the n doubles of a row to another (a setup's copy, a local partner's
+  // copy of the same link)
+  MCA_FORCE_INLINE void copy_row(const double *from, double *to, int n)
+  {
+    for (int k = 0; k < n; k++) to[k] = from[k];
+  }
+
   /* ----------------------------------------------------------------------
      count: interacting links of automaton i and its stiffness in the
      mean-stress predictor (sent to the ghost atoms)
@@ -213,14 +236,9 @@ namespace MCAKernels {
   {
     auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
-      // on a CPU the row's state is read first: its load then overlaps the
-      // others.  On a GPU it is read only for the links this thread
-      // evaluates (a load of a link the partner evaluates is wasted traffic)
-      double *row = d.history_row(i, m);
-      if (D::row_state_first && !linked(row)) continue;
-      const int j = d.partner(i, m);
-      if (partner_evaluates(d, i, j)) continue;
-      if (!D::row_state_first && !linked(row)) continue;
+      double *row;
+      int j;
+      if (!evaluates<LINK_LINKED>(d, i, m, row, j)) continue;
       const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
@@ -229,7 +247,7 @@ namespace MCAKernels {
       double copy[MAX_ROW_SIZE];
       double *h = row;
       if (!p.commit) {
-        for (int k = 0; k < d.layout.row_size; k++) copy[k] = row[k];
+        copy_row(row, copy, d.layout.row_size);
         h = copy;
       }
       MCALinkEnds e;
@@ -276,10 +294,7 @@ namespace MCAKernels {
           sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
         }
         add_traction_moment_to_partner(sums, add, to, out);
-        if (p.commit && p.eager) {
-          double *partner_row = d.history_row(j, d.row(i, m));
-          for (int k = 0; k < d.layout.row_size; k++) partner_row[k] = row[k];
-        }
+        if (p.commit && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
       }
 
       // energy and virial: the whole pair, or this owner's half of it
@@ -302,12 +317,9 @@ namespace MCAKernels {
   {
     auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
-      // (the order of the tests as in link_pass_of)
-      double *row = d.history_row(i, m);
-      if (D::row_state_first && !linked(row)) continue;
-      const int j = d.partner(i, m);
-      if (partner_evaluates(d, i, j)) continue;
-      if (!D::row_state_first && !linked(row)) continue;
+      double *row;
+      int j;
+      if (!evaluates<LINK_LINKED>(d, i, m, row, j)) continue;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       MCALinkEnds e;
@@ -365,18 +377,16 @@ namespace MCAKernels {
   {
     auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
-      double *row = d.history_row(i, m);
-      if (D::row_state_first && !broken(row)) continue;
-      const int j = d.partner(i, m);
-      if (partner_evaluates(d, i, j)) continue;
-      if (!D::row_state_first && !broken(row)) continue;
+      double *row;
+      int j;
+      if (!evaluates<LINK_BROKEN>(d, i, m, row, j)) continue;
       const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       double copy[MAX_ROW_SIZE];
       double *h = row;
       if (!p.commit) {
-        for (int k = 0; k < d.layout.row_size; k++) copy[k] = row[k];
+        copy_row(row, copy, d.layout.row_size);
         h = copy;
       }
       MCALinkEnds e;
@@ -384,18 +394,13 @@ namespace MCAKernels {
       link_ends_of(d, lo, hi, p.dt, scratch, e);
       MCALinkForces out;
       broken_pair(h, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
-      double elastic_work = h[H_WORK];
-      const int plasticity = d.layout.link_offset[PART_PLASTICITY];
-      if (plasticity >= 0) elastic_work -= h[plasticity + P_WORK];
+      const double elastic_work = h[H_WORK] - link_plastic_work(h, d.layout);
       const double sign = ilo ? 1.0 : -1.0;
       for (int k = 0; k < 3; k++) sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
       if (jlocal) {
         const auto to = sums.partner_of(add, j);
         for (int k = 0; k < 3; k++) sums.partner(add, to, LS_FORCE + k, -out.f[k]);
-        if (p.commit && p.eager) {
-          double *partner_row = d.history_row(j, d.row(i, m));
-          for (int k = 0; k < d.layout.row_size; k++) partner_row[k] = row[k];
-        }
+        if (p.commit && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
       }
       if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, elastic_work, out.f);
     }
@@ -411,11 +416,9 @@ namespace MCAKernels {
   template <class D> MCA_FUNCTION void fracture_pass_of(const D &d, const MCABreakFlags &p, int i)
   {
     for (int m = 0; m < d.nlinks(i); m++) {
-      double *row = d.history_row(i, m);
-      if (D::row_state_first && !linked(row)) continue;
-      const int j = d.partner(i, m);
-      if (partner_evaluates(d, i, j)) continue;
-      if (!D::row_state_first && !linked(row)) continue;
+      double *row;
+      int j;
+      if (!evaluates<LINK_LINKED>(d, i, m, row, j)) continue;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       const MCABreakRule rule = d.break_rule(d.type(lo), d.type(hi));
@@ -423,14 +426,17 @@ namespace MCAKernels {
 
       // the link's tractions of this step (mean of the halves), its normal
       // and half lengths, and the stress of its automata
-      double t[3], s_lo[6], s_hi[6];
+      MCALinkForces tractions;
+      link_mean_tractions(row, tractions);
+      MCALinkMotion halves;
+      half_lengths(row, halves);
+      double s_lo[6], s_hi[6];
       MCABreakInput in;
       in.n = row + H_NPREV;
-      in.sig = 0.5 * (row[H_LO + HALF_SIG] + row[H_HI + HALF_SIG]);
-      for (int k = 0; k < 3; k++) t[k] = 0.5 * (row[H_LO + HALF_T + k] + row[H_HI + HALF_T + k]);
-      in.t = t;
-      in.q_lo = row[H_Q0LO] * (1.0 + row[H_LO + HALF_EPS]);
-      in.q_hi = row[H_Q0HI] * (1.0 + row[H_HI + HALF_EPS]);
+      in.sig = tractions.sig;
+      in.t = tractions.t;
+      in.q_lo = halves.q_lo;
+      in.q_hi = halves.q_hi;
       for (int k = 0; k < 6; k++) {
         s_lo[k] = d.stress(lo, k);
         s_hi[k] = d.stress(hi, k);
@@ -445,10 +451,7 @@ namespace MCAKernels {
       if (!(index >= strength_factor(p.scatter, p.seed, d.tag(lo), d.tag(hi)))) continue;
 
       break_link(row, d.layout, rule.criterion, p.step);
-      if (j < d.nlocal && p.eager) {
-        double *partner_row = d.history_row(j, d.row(i, m));
-        for (int k = 0; k < d.layout.row_size; k++) partner_row[k] = row[k];
-      }
+      if (j < d.nlocal && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
     }
   }
 
@@ -499,9 +502,7 @@ namespace MCAKernels {
     for (int m = 0; m < d.nlinks(i); m++) {
       const int j = d.partner(i, m);
       if (!partner_evaluates(d, i, j)) continue;
-      const double *from = d.history_row(j, d.row(i, m));
-      double *to = d.history_row(i, m);
-      for (int k = 0; k < d.layout.row_size; k++) to[k] = from[k];
+      copy_row(d.history_row(j, d.row(i, m)), d.history_row(i, m), d.layout.row_size);
     }
   }
 

@@ -25,7 +25,7 @@ import sys
 import numpy as np
 import pytest
 
-from mcatest import read_thermo
+from mcatest import FCC_CUBE_DATA, field_difference, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "fracture"
@@ -157,18 +157,6 @@ run             4000
 # a cube pulled between grips with scattered strengths: the same broken
 # links on any number of ranks and threads and across a restart file
 
-CREATE = """
-units           si
-atom_style      mca
-atom_modify     map array sort 0 0
-boundary        f f f
-lattice         fcc 0.7184
-region          box block -0.1 4.1 -0.1 4.1 -0.1 4.1 units lattice
-create_box      1 box
-create_atoms    1 region box
-mca_set         all packing fcc radius 0.254
-write_data      cube.data
-"""
 CUBE = """
 units           si
 atom_style      mca
@@ -212,7 +200,7 @@ def pulled_cube(build, directory, extra_args=(), nprocs=1, split=None, nsteps=40
     scattered by +-30 %), some automata yield first.  split: 'restart'
     (through a file).  The final fields, the links (sorted by IDs) and the
     thermo."""
-    build.run(CREATE, directory, name="in.create")
+    build.run(FCC_CUBE_DATA, directory, name="in.create")
     half = nsteps // 2
     if split == "restart":
         build.run(CUBE + LOAD + f"run {half}\nwrite_restart half.restart\n", directory,
@@ -237,13 +225,9 @@ def broken_set(links):
 LINK_FORCE = 3.0e6 * math.sqrt(2) * 0.254 ** 2
 
 
-def field_difference(a, b):
-    out = {}
-    for name, cols in (("x", slice(1, 4)), ("v", slice(4, 7)), ("f", slice(7, 10)),
-                       ("damage", slice(10, 11)), ("epsp", slice(11, 12))):
-        scale = LINK_FORCE if name == "f" else max(np.abs(a[:, cols]).max(), 1e-300)
-        out[name] = np.abs(a[:, cols] - b[:, cols]).max() / scale
-    return out
+# the columns of the final dumps
+FIELDS = (("x", slice(1, 4)), ("v", slice(4, 7)), ("f", slice(7, 10)),
+          ("damage", slice(10, 11)), ("epsp", slice(11, 12)))
 
 
 def test_pulled_cube_breaks_progressively(build, tmp_path):
@@ -289,7 +273,7 @@ def test_pulled_cube_on_four_ranks(build, tmp_path):
     one, l_one, _ = pulled_cube(build, tmp_path / "one")
     four, l_four, _ = pulled_cube(build, tmp_path / "four", nprocs=4)
     assert broken_set(l_one) == broken_set(l_four)
-    diff = field_difference(one, four)
+    diff = field_difference(one, four, FIELDS, LINK_FORCE)
     print(f"\n4 ranks vs 1: {diff}")
     assert max(diff.values()) < 5e-9
 
@@ -302,7 +286,7 @@ def test_pulled_cube_kk_matches_cpu(build, tmp_path, threads):
     kk, l_kk, _ = pulled_cube(build, tmp_path / "kk",
                               extra_args=("-k", "on", "t", str(threads), "-sf", "kk"))
     assert broken_set(l_cpu) == broken_set(l_kk)
-    diff = field_difference(cpu, kk)
+    diff = field_difference(cpu, kk, FIELDS, LINK_FORCE)
     print(f"\nkk {threads} thread(s) vs cpu: {diff}")
     if threads == 1:
         # one thread adds in the CPU style's order

@@ -22,7 +22,7 @@ import sys
 import numpy as np
 import pytest
 
-from mcatest import read_thermo
+from mcatest import FCC_CUBE_DATA, field_difference, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "plasticity"
@@ -205,18 +205,6 @@ def test_nist_tension_at_reduced_size(build, tmp_path):
 # a cube pulled past yield between grips: the same results on any number of
 # ranks and threads, and across a restart file
 
-CREATE = """
-units           si
-atom_style      mca
-atom_modify     map array sort 0 0
-boundary        f f f
-lattice         fcc 0.7184
-region          box block -0.1 4.1 -0.1 4.1 -0.1 4.1 units lattice
-create_box      1 box
-create_atoms    1 region box
-mca_set         all packing fcc radius 0.254
-write_data      cube.data
-"""
 CUBE = """
 units           si
 atom_style      mca
@@ -253,7 +241,7 @@ def pulled_cube(build, directory, extra_args=(), nprocs=1, split=None, nsteps=40
     """A 4a fcc cube (365 automata, from one data file: the same atom IDs
     on any number of ranks), its top pulled at 0.05 m/s: plastic from step
     85 on.  split: 'memory' (two runs) or 'restart' (through a file)."""
-    build.run(CREATE, directory, name="in.create")
+    build.run(FCC_CUBE_DATA, directory, name="in.create")
     cube = CUBE
     if table:
         # the restart file must carry the table: it is removed before the
@@ -285,14 +273,9 @@ def pulled_cube(build, directory, extra_args=(), nprocs=1, split=None, nsteps=40
 LINK_FORCE = 2.0e6 * math.sqrt(2) * 0.254 ** 2
 
 
-def field_difference(a, b):
-    """Largest difference of each field over its scale (forces: LINK_FORCE)."""
-    out = {}
-    for name, cols in (("x", slice(1, 4)), ("v", slice(4, 7)), ("f", slice(7, 10)),
-                       ("epsp", slice(10, 11)), ("wp", slice(11, 12))):
-        scale = LINK_FORCE if name == "f" else np.abs(a[:, cols]).max()
-        out[name] = np.abs(a[:, cols] - b[:, cols]).max() / scale
-    return out
+# the columns of the final dumps
+FIELDS = (("x", slice(1, 4)), ("v", slice(4, 7)), ("f", slice(7, 10)),
+          ("epsp", slice(10, 11)), ("wp", slice(11, 12)))
 
 
 def test_pulled_cube_yields_unevenly(build, tmp_path):
@@ -322,13 +305,13 @@ def test_pulled_cube_restart_is_exact(build, tmp_path, hardening):
     # a run split in two continues as one run but for the setup between
     # them (doc/src/pair_mca.rst, Restart): printed for the record
     whole, _ = pulled_cube(build, tmp_path / "whole")
-    print(f"\nsplit vs whole run: {field_difference(whole, memory)}")
+    print(f"\nsplit vs whole run: {field_difference(whole, memory, FIELDS, LINK_FORCE)}")
 
 
 def test_pulled_cube_on_four_ranks(build, tmp_path):
     one, _ = pulled_cube(build, tmp_path / "one")
     four, _ = pulled_cube(build, tmp_path / "four", nprocs=4)
-    diff = field_difference(one, four)
+    diff = field_difference(one, four, FIELDS, LINK_FORCE)
     print(f"\n4 ranks vs 1: {diff}")
     # summation order only, grown over 400 steps (the elastic and damped
     # cubes: 1e-10 .. 3e-10 in 200 steps; here measured 1.4e-9 in f, 8e-10
@@ -343,7 +326,7 @@ def test_pulled_cube_kk_matches_cpu(build, tmp_path, threads):
     cpu, _ = pulled_cube(build, tmp_path / "cpu")
     kk, _ = pulled_cube(build, tmp_path / "kk", extra_args=("-k", "on", "t", str(threads),
                                                              "-sf", "kk"))
-    diff = field_difference(cpu, kk)
+    diff = field_difference(cpu, kk, FIELDS, LINK_FORCE)
     print(f"\nkk {threads} thread(s) vs CPU: {diff}")
     # one thread: the CPU style's order, bit for bit today (bound of the
     # elastic kk tests); two: summation order, as on several ranks
