@@ -11,7 +11,8 @@ it does not see: cache misses and the cost of each instruction.)
         --new ~/.cache/mca/build/kokkos/lmp [--modes cpu kk1] [--out FILE.md]
 
 With --options, one executable (--new) runs the elastic law and each
-optional part of in.bench (damping viscous, plasticity mises): what an
+optional part of in.bench (damping viscous, plasticity mises, fracture links
+with each criterion, at strengths the scene never reaches): what an
 option costs a scene that asks for it, in instructions (results/ir_options.md).
 """
 
@@ -70,12 +71,14 @@ def main():
             f.write("\n".join(lines) + "\n")
 
 
-OPTIONS = {"damping viscous": {"damping": "viscous"}, "plasticity mises": {"plasticity": "mises"}}
+OPTIONS = {"damping viscous": {"damping": "viscous"}, "plasticity mises": {"plasticity": "mises"},
+           **{f"fracture {c}": {"fracture": c}
+              for c in ("strain", "stress", "drucker_prager", "elliptic")}}
 
 
 def options(args):
     lines = ["| automata | mode | elastic instr/step | " + " | ".join(OPTIONS) + " | " +
-             " | ".join(f"{o.split()[0]}/elastic" for o in OPTIONS) + " |",
+             " | ".join(f"{o.split()[-1]}/elastic" for o in OPTIONS) + " |",
              "|---|---|---|" + "---|" * (2 * len(OPTIONS))]
     for mode in args.modes:
         elastic = per_step(args.new, mode)

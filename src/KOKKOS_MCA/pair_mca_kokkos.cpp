@@ -489,8 +489,11 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::fracture(bool commit
     MCAFracturePass<DeviceType> pass;
     pass.d = d;
     pass.flags = break_flags(!lazy);
-    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass);
+    int nbroke = 0;
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass, nbroke);
+    note_breaks(nbroke);
   }
+  if (!links_broke && commit) return;
   MCADamagePass<DeviceType> damage;
   damage.d = d;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), damage);
@@ -532,10 +535,11 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     k_partner_cache.template sync<DeviceType>();
     k_row_cache.template sync<DeviceType>();
     count_links_kk();
-  } else if (fractured()) {
-    // links break between reneighborings
+  } else if (links_broke) {
+    // links broke at the last step (see PairMCA::compute())
     count_links_kk();
   }
+  links_broke = 0;
 
   const bool commit = (update->setupflag == 0);
   const bool lazy = links->lazy_rows && links->row_sync == this;

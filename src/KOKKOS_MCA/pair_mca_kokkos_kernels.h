@@ -438,10 +438,14 @@ template <class DeviceType, class Sums, class TallyScatter> struct MCABrokenPass
 
 template <class DeviceType> struct MCAFracturePass {
   typedef DeviceType device_type;
+  typedef int value_type;    // links broken
   MCAPairViews<DeviceType> d;
   MCABreakFlags flags;
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { fracture_pass_of(d, flags, i); }
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int &nbroke) const
+  {
+    nbroke += fracture_pass_of(d, flags, i);
+  }
 };
 
 template <class DeviceType> struct MCADamagePass {

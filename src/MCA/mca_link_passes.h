@@ -413,8 +413,10 @@ namespace MCAKernels {
     int seed;
   };
 
-  template <class D> MCA_FUNCTION void fracture_pass_of(const D &d, const MCABreakFlags &p, int i)
+  // (returns the number of links it broke)
+  template <class D> MCA_FUNCTION int fracture_pass_of(const D &d, const MCABreakFlags &p, int i)
   {
+    int nbroke = 0;
     for (int m = 0; m < d.nlinks(i); m++) {
       double *row;
       int j;
@@ -452,7 +454,9 @@ namespace MCAKernels {
 
       break_link(row, d.layout, rule.criterion, p.step);
       if (j < d.nlocal && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
+      nbroke++;
     }
+    return nbroke;
   }
 
   // damage of automaton i: the fraction of its links that are broken,

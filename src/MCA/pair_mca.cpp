@@ -106,6 +106,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   restart_named = 0;
   restart_tables = 0;
   restart_fracture = 0;
+  links_broke = 0;
   break_scatter = 0.0;
   break_seed = 0;
   select_parts({});
@@ -635,9 +636,11 @@ void PairMCA::compute(int eflag, int vflag)
   grow_peratom();
 
   // link states (and so the predictor stiffness, sent to the ghost atoms)
-  // change only when the partners are found again, or where links break
+  // change only when the partners are found again, or when links broke at
+  // the last step (on any processor)
   if (fractured() && partners_outdated()) forget_broken_links();
-  if (refresh_partners() || fractured()) count_links();
+  if (refresh_partners() || links_broke) count_links();
+  links_broke = 0;
 
   predict_mean_stress();
 
@@ -690,15 +693,19 @@ void PairMCA::compute(int eflag, int vflag)
   for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, bmat[i], p.commit);
 
   // fracture: the links that meet their criterion with the stress of this
-  // step break (from the next step on they are broken pairs)
+  // step break (from the next step on they are broken pairs); the damage
+  // changes only then (and is found again at a setup)
   if (fractured()) {
     if (p.commit) {
       comm_stage = STAGE_BREAK;
       MCACompat::forward_comm(comm, this);
       const MCABreakFlags b = break_flags(p.eager);
-      for (int i = 0; i < d.nlocal; i++) fracture_pass_of(d, b, i);
+      int nbroke = 0;
+      for (int i = 0; i < d.nlocal; i++) nbroke += fracture_pass_of(d, b, i);
+      note_breaks(nbroke);
     }
-    for (int i = 0; i < d.nlocal; i++) damage_of(d, i);
+    if (links_broke || !p.commit)
+      for (int i = 0; i < d.nlocal; i++) damage_of(d, i);
   }
 
   nstretched = totals.nlong;
@@ -708,6 +715,13 @@ void PairMCA::compute(int eflag, int vflag)
 /* ----------------------------------------------------------------------
    fracture: what the fracture pass needs besides the data
 ------------------------------------------------------------------------- */
+
+// whether links broke on any processor: they are counted again at the
+// next step
+void PairMCA::note_breaks(int nbroke_local)
+{
+  MPI_Allreduce(&nbroke_local, &links_broke, 1, MPI_INT, MPI_MAX, world);
+}
 
 MCABreakFlags PairMCA::break_flags(bool eager) const
 {
