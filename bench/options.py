@@ -1,6 +1,8 @@
 """Cost of the optional parts of the link law against the elastic law:
 microseconds per automaton-step of pair mca on the free fcc cubes of
-in.bench with and without an option (damping viscous, plasticity mises), the runs
+in.bench with and without an option (damping viscous, plasticity mises,
+fracture links with the Drucker-Prager or the elliptic criterion, strengths
+that nothing reaches), the runs
 alternating, the best of N each.  One executable: what the option costs
 when a scene asks for it.  (What its existence costs an elastic-only run
 is a before/after comparison of two builds: compare.py.)
@@ -16,7 +18,9 @@ import tempfile
 from kokkos import MODES, STEPS, run_once
 
 OPTIONS = {"elastic": {}, "damping viscous": {"damping": "viscous"},
-           "plasticity mises": {"plasticity": "mises"}}
+           "plasticity mises": {"plasticity": "mises"},
+           "fracture drucker_prager": {"fracture": "drucker_prager"},
+           "fracture elliptic": {"fracture": "elliptic"}}
 
 
 def main():

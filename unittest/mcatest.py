@@ -170,7 +170,8 @@ def read_dump(path):
 
 
 def read_thermo(log_path):
-    """Thermo output of the last run in a log file as a dict of numpy arrays."""
+    """Thermo output of the last run in a log file as a dict of numpy arrays
+    (warnings printed between its lines are skipped)."""
     lines = pathlib.Path(log_path).read_text().splitlines()
     header_at = [k for k, line in enumerate(lines) if line.split()[:1] == ["Step"]]
     if not header_at:
@@ -179,6 +180,8 @@ def read_thermo(log_path):
     names = lines[start].split()
     rows = []
     for line in lines[start + 1:]:
+        if line.startswith("WARNING"):
+            continue
         words = line.split()
         if len(words) != len(names):
             break

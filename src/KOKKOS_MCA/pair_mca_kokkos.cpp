@@ -390,15 +390,11 @@ void PairMCAKokkos<DeviceType>::run_link_kernel(Pass &pass, bool commit, bool la
                                                 MCALinkSums &sums)
 {
   pass.d = views();
-  pass.flags.commit = commit;
-  pass.flags.eager = !lazy;
+  pass.flags = link_pass_flags(commit, !lazy);
   pass.tally.eflag_global = eflag_global;
   pass.tally.vflag_global = vflag_global;
   pass.tally.eflag_atom = eflag_atom;
   pass.tally.vflag_atom = vflag_atom;
-  // spins turn the automata only in steps of a run (see PairMCA::compute)
-  pass.flags.dt = commit ? update->dt : 0.0;
-  pass.flags.cutsq = cut_global * cut_global;
   // (a reduction sets its result)
   MCALinkSums kernel_sums;
   if (need_dup()) {
@@ -445,11 +441,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool 
 {
   const int nlocal = atom->nlocal;
   const MCAPairViews<DeviceType> d = views();
-  MCALinkPassFlags flags;
-  flags.commit = commit;
-  flags.eager = false;
-  flags.dt = commit ? update->dt : 0.0;
-  flags.cutsq = cut_global * cut_global;
+  const MCALinkPassFlags flags = link_pass_flags(commit, false);
   if (need_dup()) {
     MCAChunkedFor<MCATrialPass<DeviceType, MCAChunkSums<DeviceType>>> chunked;
     chunked.pass.d = d;
@@ -484,11 +476,12 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::fracture(bool commit
 {
   const int nlocal = atom->nlocal;
   const MCAPairViews<DeviceType> d = views();
+  const MCABreakFlags flags = break_flags(!lazy);
   if (commit) {
     forward_comm_stage(STAGE_BREAK);
     MCAFracturePass<DeviceType> pass;
     pass.d = d;
-    pass.flags = break_flags(!lazy);
+    pass.flags = flags;
     int nbroke = 0;
     Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass, nbroke);
     note_breaks(nbroke);
@@ -496,7 +489,11 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::fracture(bool commit
   if (!links_broke && commit) return;
   MCADamagePass<DeviceType> damage;
   damage.d = d;
-  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), damage);
+  damage.break_step = commit ? flags.step : -1.0;
+  damage.eflag_atom = eflag_atom;
+  double released = 0.0;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), damage, released);
+  if (eflag_global) eng_vdwl -= released;
 }
 
 /* ---------------------------------------------------------------------- */

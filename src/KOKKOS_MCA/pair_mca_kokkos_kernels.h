@@ -450,9 +450,17 @@ template <class DeviceType> struct MCAFracturePass {
 
 template <class DeviceType> struct MCADamagePass {
   typedef DeviceType device_type;
+  typedef double value_type;    // energy released at break_step (halves)
   MCAPairViews<DeviceType> d;
+  double break_step;
+  bool eflag_atom;
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { damage_of(d, i); }
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double &released) const
+  {
+    const double released_i = damage_of(d, i, break_step);
+    if (eflag_atom) d.eatom(i) -= released_i;
+    released += released_i;
+  }
 };
 
 /* ----------------------------------------------------------------------

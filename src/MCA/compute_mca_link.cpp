@@ -166,8 +166,11 @@ void ComputeMCALink::compute_local()
       // a broken pair pushes only (mca_link_law.h)
       double sig = 0.5 * (h[H_LO + HALF_SIG] + h[H_HI + HALF_SIG]);
       if (broken(h)) sig = broken_traction(sig);
+      // (and has no shear traction: the row keeps the link's until the
+      // first step of the broken pair)
       double t[3];
-      for (int k = 0; k < 3; k++) t[k] = 0.5 * (h[H_LO + HALF_T + k] + h[H_HI + HALF_T + k]);
+      for (int k = 0; k < 3; k++)
+        t[k] = broken(h) ? 0.0 : 0.5 * (h[H_LO + HALF_T + k] + h[H_HI + HALF_T + k]);
       const double tau = sqrt(dot3(t, t));
       const double area = h[H_APREV];
       const double dissipated = damping >= 0 ? h[damping + D_WORK] : 0.0;

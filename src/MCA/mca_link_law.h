@@ -583,8 +583,9 @@ namespace MCAKernels {
     return plasticity >= 0 ? hist[plasticity + P_WORK] : 0.0;
   }
 
-  // a link breaks: its elastic energy (less its plastic work) is released,
-  // shear tractions and couples are dropped
+  // a link breaks: its elastic energy (less its plastic work) is released.
+  // Its tractions stay in the row for the first step of the broken pair
+  // (finish_break)
   MCA_INLINE void break_link(double *hist, const MCALinkLayout &layout, int cause, double step)
   {
     const double plastic_work = link_plastic_work(hist, layout);
@@ -594,6 +595,26 @@ namespace MCAKernels {
     block[F_RELEASED] = hist[H_WORK] - plastic_work;
     hist[H_WORK] = plastic_work;
     hist[H_STATE] = LINK_BROKEN;
+  }
+
+  // the first step of a broken pair: the forces of the link at its last
+  // step (tractions, couples, dampers) gave the automata the first half
+  // kick of this step (velocity Verlet), so their work over this step
+  // (trapezoidal: half of it) belongs to the break, the elastic part to
+  // the released energy, the dampers' to their dissipated energy; the
+  // shear tractions, couples and damper forces are then dropped
+  MCA_INLINE void finish_break(double *hist, const MCALinkLayout &layout, const MCALinkMotion &mo)
+  {
+    hist[layout.link_offset[PART_FRACTURE] + F_RELEASED] += link_work_old(hist, mo);
+    const int damping = layout.link_offset[PART_DAMPING];
+    if (damping >= 0) {
+      double *block = hist + damping;
+      double work = 0.5 * block[D_FN] * mo.dr;
+      for (int m = 0; m < 3; m++) work += 0.5 * block[D_FT + m] * mo.dl[m];
+      block[D_WORK] += work;
+      block[D_FN] = 0.0;
+      for (int m = 0; m < 3; m++) block[D_FT + m] = 0.0;
+    }
     for (int m = 0; m < 3; m++) {
       hist[H_LO + HALF_T + m] = hist[H_HI + HALF_T + m] = 0.0;
       hist[H_LO + HALF_COUPLE + m] = hist[H_HI + HALF_COUPLE + m] = 0.0;
@@ -607,16 +628,25 @@ namespace MCAKernels {
     return sig_virtual < 0.0 ? sig_virtual : 0.0;
   }
 
-  // one step of a broken pair (hist updated, as linked_pair)
+  // one step of a broken pair (hist updated, as linked_pair); first: the
+  // first step after the break
   MCA_FORCE_INLINE void broken_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
-                                    const MCAMaterial &mat_hi, MCALinkForces &out)
+                                    const MCAMaterial &mat_hi, bool first, MCALinkForces &out)
   {
     const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
     MCALinkMotion mo;
     link_motion(hist, e, out, mo);
-    mo.sig_old = broken_traction(mo.sig_old);
     for (int m = 0; m < 3; m++) mo.dl[m] = 0.0;
     normal_traction(hist, e, m_lo, m_hi, mo);
+    if (first) {
+      // (the link's forces of the last step are accounted for whole)
+      link_slip(hist, e, out.n, mo);
+      finish_break(hist, *e.layout, mo);
+      for (int m = 0; m < 3; m++) mo.t_old[m] = mo.c_old[m] = mo.dl[m] = 0.0;
+      mo.sig_old = 0.0;
+    } else {
+      mo.sig_old = broken_traction(mo.sig_old);
+    }
     link_area(hist, e, m_lo, m_hi, out);
     out.sig = broken_traction(0.5 * (hist[H_LO + HALF_SIG] + hist[H_HI + HALF_SIG]));
     for (int m = 0; m < 3; m++) {

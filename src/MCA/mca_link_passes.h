@@ -183,6 +183,7 @@ namespace MCAKernels {
     bool eager;      // bring a local partner's copy of the row up to date now
     double dt;       // time step, 0 in a setup (spins turn automata only in steps)
     double cutsq;    // square of the pair cutoff (links longer are counted)
+    double step;     // the time step number (a broken pair's first step)
   };
 
   // what the law reads of the automata lo and hi of a link (scratch: 12
@@ -375,6 +376,7 @@ namespace MCAKernels {
   MCA_FUNCTION void broken_pass_of(const D &d, const Sums &sums, const Tally &tally,
                                    const MCALinkPassFlags &p, int i, Totals &totals)
   {
+    const int ff = d.layout.link_offset[PART_FRACTURE];
     auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
       double *row;
@@ -393,7 +395,8 @@ namespace MCAKernels {
       double scratch[12];
       link_ends_of(d, lo, hi, p.dt, scratch, e);
       MCALinkForces out;
-      broken_pair(h, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
+      const bool first = p.commit && h[ff + F_STEP] == p.step - 1.0;
+      broken_pair(h, e, d.material(d.type(lo)), d.material(d.type(hi)), first, out);
       const double elastic_work = h[H_WORK] - link_plastic_work(h, d.layout);
       const double sign = ilo ? 1.0 : -1.0;
       for (int k = 0; k < 3; k++) sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
@@ -460,17 +463,27 @@ namespace MCAKernels {
   }
 
   // damage of automaton i: the fraction of its links that are broken,
-  // counting those it has forgotten
-  template <class D> MCA_FUNCTION void damage_of(const D &d, int i)
+  // counting those it has forgotten.  Returns the energy released by its
+  // links that broke at step break_step (its half of each; none for a
+  // negative step): the energy tally of that step, made before the
+  // fracture pass, still counts it as elastic energy
+  template <class D> MCA_FUNCTION double damage_of(const D &d, int i, double break_step)
   {
+    const int ff = d.layout.link_offset[PART_FRACTURE];
     int nbroken = 0;
-    for (int m = 0; m < d.nlinks(i); m++)
-      if (broken(current_row(d, i, m))) nbroken++;
+    double released = 0.0;
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const double *row = current_row(d, i, m);
+      if (!broken(row)) continue;
+      nbroken++;
+      if (row[ff + F_STEP] == break_step) released += 0.5 * row[ff + F_RELEASED];
+    }
     const int fa = d.layout.atom_offset[PART_FRACTURE];
     double forgotten = 0.0;
     for (int c = 0; c < NBREAK - 1; c++) forgotten += d.atom_state(i, fa + FA_FORGOTTEN + c);
     const double total = d.nlinks(i) + forgotten;
     d.damage(i) = total > 0.0 ? (nbroken + forgotten) / total : 0.0;
+    return released;
   }
 
   // forces and torques of automaton i from its link sums

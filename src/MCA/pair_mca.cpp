@@ -651,12 +651,8 @@ void PairMCA::compute(int eflag, int vflag)
   // pre-exchange could move atoms first.  Spins turn the automata only in
   // steps of a run: a setup (or run 0) sees the positions of the last step
   // plus any displacement since, but no rotation
-  MCALinkPassFlags p;
-  p.commit = (update->setupflag == 0);
   const bool lazy = links->lazy_rows && links->row_sync == this;
-  p.eager = !lazy;
-  p.dt = p.commit ? update->dt : 0.0;
-  p.cutsq = cut_global * cut_global;
+  const MCALinkPassFlags p = link_pass_flags(update->setupflag == 0, !lazy);
 
   const HostData d = host_data();
   const HostLinkSums sums{atom->f, atom->torque, bmat};
@@ -694,18 +690,27 @@ void PairMCA::compute(int eflag, int vflag)
 
   // fracture: the links that meet their criterion with the stress of this
   // step break (from the next step on they are broken pairs); the damage
-  // changes only then (and is found again at a setup)
+  // changes only then (and is found again at a setup).  The energy the
+  // breaks released leaves the elastic energy of this step's tally
   if (fractured()) {
+    const MCABreakFlags b = break_flags(p.eager);
     if (p.commit) {
       comm_stage = STAGE_BREAK;
       MCACompat::forward_comm(comm, this);
-      const MCABreakFlags b = break_flags(p.eager);
       int nbroke = 0;
       for (int i = 0; i < d.nlocal; i++) nbroke += fracture_pass_of(d, b, i);
       note_breaks(nbroke);
     }
-    if (links_broke || !p.commit)
-      for (int i = 0; i < d.nlocal; i++) damage_of(d, i);
+    if (links_broke || !p.commit) {
+      const double break_step = p.commit ? b.step : -1.0;
+      double released = 0.0;
+      for (int i = 0; i < d.nlocal; i++) {
+        const double released_i = damage_of(d, i, break_step);
+        if (eflag_atom) eatom[i] -= released_i;
+        released += released_i;
+      }
+      if (eflag_global) eng_vdwl -= released;
+    }
   }
 
   nstretched = totals.nlong;
@@ -721,6 +726,19 @@ void PairMCA::compute(int eflag, int vflag)
 void PairMCA::note_breaks(int nbroke_local)
 {
   MPI_Allreduce(&nbroke_local, &links_broke, 1, MPI_INT, MPI_MAX, world);
+}
+
+// what a link pass needs besides the data (spins turn the automata only
+// in steps of a run: dt = 0 in a setup)
+MCALinkPassFlags PairMCA::link_pass_flags(bool commit, bool eager) const
+{
+  MCALinkPassFlags p;
+  p.commit = commit;
+  p.eager = eager;
+  p.dt = commit ? update->dt : 0.0;
+  p.cutsq = cut_global * cut_global;
+  p.step = static_cast<double>(update->ntimestep);
+  return p;
 }
 
 MCABreakFlags PairMCA::break_flags(bool eager) const
@@ -750,13 +768,15 @@ void PairMCA::forget_broken_links()
   const int fa = model.layout().atom_offset[PART_FRACTURE];
   const int ff = model.layout().link_offset[PART_FRACTURE];
   const int row_size = links->row_size;
+  const double last_step = static_cast<double>(update->ntimestep) - 1.0;
   bool changed = false;
   for (int i = 0; i < atom->nlocal; i++) {
     int &n = links->nlinks[i];
     double *state = links->atom_state[i];
     for (int m = n - 1; m >= 0; m--) {
       double *row = &links->history[i][m * row_size];
-      if (!broken(row) || row[H_RPREV] <= cut_global) continue;
+      // (not before the first step of the broken pair: finish_break)
+      if (!broken(row) || row[H_RPREV] <= cut_global || row[ff + F_STEP] >= last_step) continue;
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
       if (cause > BREAK_NONE && cause < NBREAK) state[fa + FA_FORGOTTEN + cause - 1] += 1.0;
       state[fa + FA_RELEASED] += row[ff + F_RELEASED];

@@ -108,6 +108,7 @@ class PairMCA : public PairMCALinked {
   // (at reneighboring, before the partners are found again)
   void forget_broken_links();
   MCAKernels::MCABreakFlags break_flags(bool eager) const;
+  MCAKernels::MCALinkPassFlags link_pass_flags(bool commit, bool eager) const;
   int links_broke;    // links broke at the last step (on some processor)
   void note_breaks(int nbroke_local);
 
