@@ -286,6 +286,7 @@ template <class DeviceType>
 int PairMCAKokkos<DeviceType>::pack_forward_comm(int n, int *list, double *buf, int pbc_flag,
                                                  int *pbc)
 {
+  if (comm_stage == STAGE_ESTIMATE) return PairMCA::pack_forward_comm(n, list, buf, pbc_flag, pbc);
   MCAKokkos::dual_double_1d *a, *b;
   MCAKokkos::dual_double_2d *c;
   stage_views(comm_stage, a, b, c);
@@ -298,6 +299,10 @@ int PairMCAKokkos<DeviceType>::pack_forward_comm(int n, int *list, double *buf, 
 template <class DeviceType>
 void PairMCAKokkos<DeviceType>::unpack_forward_comm(int n, int first, double *buf)
 {
+  if (comm_stage == STAGE_ESTIMATE) {
+    PairMCA::unpack_forward_comm(n, first, buf);
+    return;
+  }
   MCAKokkos::dual_double_1d *a, *b;
   MCAKokkos::dual_double_2d *c;
   stage_views(comm_stage, a, b, c);
@@ -532,6 +537,8 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     k_partner_cache.template sync<DeviceType>();
     k_row_cache.template sync<DeviceType>();
     count_links_kk();
+    // (the host copies of the table are current here)
+    check_stable_timestep(update->setupflag ? ESTIMATE_SETUP : ESTIMATE_RENEIGHBOR);
   } else if (links_broke) {
     // links broke at the last step (see PairMCA::compute())
     count_links_kk();
@@ -586,6 +593,26 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
 
   nstretched = sums.nlong;
   if (neighbor->ago == 0) stretched_warning();
+}
+
+/* ----------------------------------------------------------------------
+   the stable time step is estimated on the host (PairMCA, the same code
+   and so the same estimate as the CPU style): the host copies of what it
+   reads, and its communication through the host buffers
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::estimate_host_state()
+{
+  atomKK->sync(Host, TAG_MASK | TYPE_MASK | RMASS_MASK | MCA_GEOMETRY_MASK);
+  links->to_host();
+}
+
+template <class DeviceType> void PairMCAKokkos<DeviceType>::estimate_forward_comm()
+{
+  const ExecutionSpace space = execution_space;
+  execution_space = Host;
+  PairMCA::estimate_forward_comm();
+  execution_space = space;
 }
 
 /* ----------------------------------------------------------------------

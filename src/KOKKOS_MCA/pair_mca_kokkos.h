@@ -85,11 +85,13 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   void unpack_forward_comm_kokkos(int, int, MCA_KK_COMM_BUFFER &) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  void estimate_forward_comm() override;
   double memory_usage() override;
 
  protected:
   void allocate_partner_cache() override;
   const char *links_fix_style() const override { return "MCA_LINKS/kk"; }
+  void estimate_host_state() override;
 
  private:
   class AtomKokkos *atomKK;

@@ -25,6 +25,7 @@
      mca_plasticity.h    hardening curves, radial return, plastic correction
      mca_link_law.h      the link law, step by step
      mca_link_passes.h   the passes over the links, for both dispatchers
+     mca_stability.h     the linearised link law, for the stable time step
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_MCA_KERNELS_H
@@ -39,5 +40,6 @@
 #include "mca_mean_stress.h"
 #include "mca_plasticity.h"
 #include "mca_prescribe.h"
+#include "mca_stability.h"
 
 #endif

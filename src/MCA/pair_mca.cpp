@@ -88,7 +88,8 @@ PairMCA::PairMCA(LAMMPS *lmp) :
     PairMCALinked(lmp, "Pair mca"), materials(lmp), link_allowed(nullptr), link_tolerance(nullptr),
     link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr), smean_pred(nullptr),
     predictor_sums(nullptr), bmat(nullptr), return_scale(nullptr), return_smean(nullptr),
-    avec(nullptr)
+    avec(nullptr), stability(nullptr), dt_monitor(), dt_estimated(0), dt_warned_ratio(0.0),
+    links_changed(0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -110,6 +111,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   break_scatter = 0.0;
   break_seed = 0;
   select_parts({});
+  stability = new MCAStableTimestep(lmp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -124,6 +126,7 @@ PairMCA::~PairMCA()
     memory->destroy(link_tolerance);
   }
   destroy_peratom();
+  delete stability;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -442,21 +445,6 @@ void PairMCA::init_style()
     cut_global = 2.0 * rmaxall * (1.0 + tolmax) + 0.5 * rmaxall;
     if (cut_global <= 0.0) cut_global = 1.0;    // no atoms yet
   }
-
-  // time step: a P wave must not cross an automaton in one step; the
-  // measured stability limit is 0.9 to 1.35 d/(2 c_p) (see doc/src/pair_mca.rst)
-  const double dt_limit = recommended_timestep();
-  if (comm->me == 0) {
-    utils::logmesg(lmp,
-                   "pair mca: time step limit d/(2 c_p) = {:.6g} (smallest, stiffest "
-                   "automaton); recommended time step <= {:.6g}\n",
-                   dt_limit, 0.5 * dt_limit);
-    if (update->dt > 0.9 * dt_limit)
-      error->warning(FLERR,
-                     "Time step {} is at or above the stability limit of pair mca "
-                     "(about d/(2 c_p) = {:.6g}); the recommended time step is <= {:.6g}",
-                     update->dt, dt_limit, 0.5 * dt_limit);
-  }
 }
 
 /* ----------------------------------------------------------------------
@@ -477,22 +465,148 @@ void PairMCA::set_masses()
 }
 
 /* ----------------------------------------------------------------------
-   time step limit d/(2 c_p) = R/c_p, minimum over automata
+   the stable time step (doc/src/pair_mca.rst, "Stable time step"): made
+   at the first setup and again when what it depends on changed: the
+   links (at a setup or a query: a link that breaks only softens the
+   scene), the masses or the materials, or the stiffness of the
+   deformed automata (the monitor: the largest trace of an automaton's
+   mass-scaled stiffness; when LAMMPS reneighbors only if it grew)
 ------------------------------------------------------------------------- */
 
-double PairMCA::recommended_timestep()
+// relative change of the monitor that makes the estimate again
+static constexpr double MONITOR_TOL = 0.02;
+
+MCAStableTimestep::Input PairMCA::stability_input()
 {
-  double dtmin = 1.0e300;
-  const int nlocal = atom->nlocal;
-  const int *type = atom->type;
-  for (int i = 0; i < nlocal; i++) {
-    const MCAMaterial &m = materials.type[type[i]];
-    const double cp = p_wave_speed(m.shear, m.bulk, m.density);
-    dtmin = MIN(dtmin, atom->radius[i] / cp);
+  MCAStableTimestep::Input in;
+  in.links = host_links();
+  in.type = atom->type;
+  in.packing = avec->packing;
+  in.rmass = atom->rmass;
+  in.inertia = avec->inertia;
+  in.material = materials.type;
+  in.damping = model.layout().link_offset[PART_DAMPING] >= 0;
+  return in;
+}
+
+// the sums of the masses and moments of inertia of the automata and the
+// elastic and damping input of each type
+std::vector<double> PairMCA::stability_inputs()
+{
+  double local[2] = {0.0, 0.0}, all[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    local[0] += atom->rmass[i];
+    local[1] += avec->inertia[i];
   }
-  double dtall;
-  MPI_Allreduce(&dtmin, &dtall, 1, MPI_DOUBLE, MPI_MIN, world);
-  return dtall;
+  MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_SUM, world);
+  std::vector<double> v = {all[0], all[1]};
+  for (int t = 1; t <= atom->ntypes; t++) {
+    const MCAMaterial &m = materials.type[t];
+    v.insert(v.end(), {m.youngs, m.poisson, m.density, m.viscosity});
+  }
+  return v;
+}
+
+void PairMCA::check_stable_timestep(EstimateWhen when)
+{
+  estimate_host_state();
+  const MCAStableTimestep::Input in = stability_input();
+  const MCAStableTimestep::Monitor monitor = stability->monitor(in);
+  const std::vector<double> inputs = stability_inputs();
+  int changed = 0;
+  if (when != ESTIMATE_RENEIGHBOR)
+    MPI_Allreduce(&links_changed, &changed, 1, MPI_INT, MPI_MAX, world);
+  bool stale = !dt_estimated || changed || inputs.size() != dt_inputs.size();
+  for (std::size_t k = 0; !stale && k < inputs.size(); k++)
+    stale = fabs(inputs[k] - dt_inputs[k]) > 1.0e-12 * fabs(dt_inputs[k]);
+  // the largest relative change of a monitor value since the estimate
+  double growth = 0.0, change = 0.0;
+  for (int c = 0; c < MCAStableTimestep::NMONITOR; c++) {
+    const double before = dt_monitor.value[c];
+    if (!(before > 0.0)) {
+      if (monitor.value[c] > 0.0) growth = change = 1.0;
+      continue;
+    }
+    const double g = monitor.value[c] / before - 1.0;
+    growth = std::max(growth, g);
+    change = std::max(change, fabs(g));
+  }
+  if (!stale) stale = ((when == ESTIMATE_RENEIGHBOR) ? growth : change) > MONITOR_TOL;
+  // the time step against the estimate at every setup, and when it changed
+  if (!stale) {
+    if (when == ESTIMATE_SETUP) timestep_warning({});
+    return;
+  }
+
+  dt_estimate = stability->estimate(in, this);
+  dt_estimated = 1;
+  dt_monitor = monitor;
+  dt_inputs = inputs;
+  links_changed = 0;
+  if (comm->me != 0) return;
+
+  // the estimate is printed at a setup; made during a run (here, or for
+  // compute mca/timestep) it is printed only in the warning of a time step
+  // above it (a line between the thermo lines would break their readers)
+  const MCAStableTimestep::Result &r = dt_estimate;
+  if (when == ESTIMATE_SETUP && r.nlinks == 0)
+    utils::logmesg(lmp, "pair mca: no links act, so pair mca sets no limit to the time step\n");
+  if (when == ESTIMATE_SETUP && r.nlinks > 0) {
+    const std::string damping_text = (r.zeta > 0.0) ? fmt::format(", damping ratio {:.3g}", r.zeta)
+                                                    : std::string();
+    utils::logmesg(lmp,
+                   "pair mca: stable time step {:.6g} (fastest mode: omega {:.6g}{}; {} Lanczos "
+                   "steps over {} links; stiffest automaton {} of type {}, its stiffest link "
+                   "{}-{}); recommended time step <= {} x {:.6g} = {:.6g}\n",
+                   r.dt, r.omega, damping_text, r.iterations, r.nlinks, monitor.atom,
+                   monitor.atom_type, monitor.link_i, monitor.link_j, RECOMMENDED_FRACTION, r.dt,
+                   RECOMMENDED_FRACTION * r.dt);
+  }
+  timestep_warning(when == ESTIMATE_SETUP ? std::string()
+                                          : fmt::format(" at step {} (the stiffness changed by "
+                                                        "up to {:.3g} %)",
+                                                        update->ntimestep, 100.0 * change));
+}
+
+void PairMCA::timestep_warning(const std::string &when)
+{
+  const MCAStableTimestep::Result &r = dt_estimate;
+  if (!dt_estimated || !(update->dt > r.dt)) return;
+  // during a run, again only if the time step is 5 % further above it (a
+  // run that blows up stiffens its links at every step)
+  const double ratio = update->dt / r.dt;
+  if (!when.empty() && ratio < 1.05 * dt_warned_ratio) return;
+  dt_warned_ratio = when.empty() ? 0.0 : ratio;
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "Time step {} is above the stable time step {:.6g} of pair mca{} ({:.4g} times "
+                   "it); use a time step <= {:.6g} ({} of the stable time step)",
+                   update->dt, r.dt, when, update->dt / r.dt, RECOMMENDED_FRACTION * r.dt,
+                   RECOMMENDED_FRACTION);
+}
+
+const MCAStableTimestep::Result *PairMCA::stable_timestep()
+{
+  if (!links || !links->created) return nullptr;
+  // the partners of the links are known for these automata
+  if (cache_nlocal == atom->nlocal) check_stable_timestep(ESTIMATE_QUERY);
+  return dt_estimated ? &dt_estimate : nullptr;
+}
+
+void PairMCA::estimate_forward_comm()
+{
+  comm_stage = STAGE_ESTIMATE;
+  MCACompat::forward_comm(comm, this);
+}
+
+std::string PairMCA::timestep_hint()
+{
+  if (!dt_estimated || !(dt_estimate.dt > 0.0) || !std::isfinite(dt_estimate.dt)) return {};
+  const double ratio = update->dt / dt_estimate.dt;
+  if (ratio <= 0.8) return {};
+  return fmt::format("; the time step {} is {:.3g} times the stable time step {:.6g} of pair mca: "
+                     "a run that blows up stretches and loses links, use a time step <= {:.6g}",
+                     update->dt, ratio, dt_estimate.dt, RECOMMENDED_FRACTION * dt_estimate.dt);
 }
 
 /* ----------------------------------------------------------------------
@@ -641,6 +755,8 @@ void PairMCA::compute(int eflag, int vflag)
   if (fractured() && partners_outdated()) forget_broken_links();
   if (refresh_partners() || links_broke) count_links();
   links_broke = 0;
+  if (neighbor->ago == 0)
+    check_stable_timestep(update->setupflag ? ESTIMATE_SETUP : ESTIMATE_RENEIGHBOR);
 
   predict_mean_stress();
 
@@ -726,6 +842,7 @@ void PairMCA::compute(int eflag, int vflag)
 void PairMCA::note_breaks(int nbroke_local)
 {
   MPI_Allreduce(&nbroke_local, &links_broke, 1, MPI_INT, MPI_MAX, world);
+  if (links_broke) links_changed = 1;
 }
 
 // what a link pass needs besides the data (spins turn the automata only
@@ -792,6 +909,7 @@ void PairMCA::forget_broken_links()
     }
   }
   if (changed) {
+    links_changed = 1;
     links->host_changed();
     cache_nlocal = -1;    // the row indices of the partners changed
   }
@@ -801,6 +919,7 @@ void PairMCA::forget_broken_links()
 
 int PairMCA::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
+  if (comm_stage == STAGE_ESTIMATE) return stability->pack_forward_comm(n, list, buf);
   int m = 0;
   if (comm_stage == STAGE_BREAK) {
     for (int i = 0; i < n; i++) {
@@ -827,6 +946,10 @@ int PairMCA::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
 
 void PairMCA::unpack_forward_comm(int n, int first, double *buf)
 {
+  if (comm_stage == STAGE_ESTIMATE) {
+    stability->unpack_forward_comm(n, first, buf);
+    return;
+  }
   int m = 0;
   const int last = first + n;
   if (comm_stage == STAGE_BREAK) {

@@ -22,11 +22,12 @@ PairStyle(mca,PairMCA);
 
 #include "mca_link_passes.h"
 #include "mca_materials.h"
+#include "mca_stable_timestep.h"
 #include "pair_mca_linked.h"
 
 namespace LAMMPS_NS {
 
-class PairMCA : public PairMCALinked {
+class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
  public:
   PairMCA(class LAMMPS *);
   ~PairMCA() override;
@@ -52,7 +53,13 @@ class PairMCA : public PairMCALinked {
   // communication, called by compute() (and by the Kokkos variant)
   virtual void predict_mean_stress();
 
-  double recommended_timestep();
+  // the stable time step of the scene (made again first if the links,
+  // the masses, the materials or the stiffness changed since); nullptr
+  // before the links are made
+  const MCAStableTimestep::Result *stable_timestep();
+  // the time step pair mca recommends: a fraction of the stable one
+  static constexpr double RECOMMENDED_FRACTION = 0.7;
+  void estimate_forward_comm() override;
 
  protected:
   MCAMaterials materials;    // per type
@@ -84,7 +91,7 @@ class PairMCA : public PairMCALinked {
   // what the forward communication sends: the predictor stiffness, the
   // mean-stress increment and prediction, or the return of the automata
   // or (fracture) the stress and plastic strain of the step
-  enum CommStage { STAGE_COUNT, STAGE_MEAN, STAGE_RETURN, STAGE_BREAK };
+  enum CommStage { STAGE_COUNT, STAGE_MEAN, STAGE_RETURN, STAGE_BREAK, STAGE_ESTIMATE };
   int comm_stage;
   int restart_named;       // the restart file being read names its material keywords
   int restart_tables;      // and holds hardening tables
@@ -111,6 +118,29 @@ class PairMCA : public PairMCALinked {
   MCAKernels::MCALinkPassFlags link_pass_flags(bool commit, bool eager) const;
   int links_broke;    // links broke at the last step (on some processor)
   void note_breaks(int nbroke_local);
+
+  // the stable time step: its estimate, and what it was made from (the
+  // monitor value of the stiffness, a checksum of the masses and
+  // materials, the link changes counted since)
+  MCAStableTimestep *stability;
+  MCAStableTimestep::Result dt_estimate;
+  MCAStableTimestep::Monitor dt_monitor;
+  int dt_estimated;
+  double dt_warned_ratio;    // time step / estimate of the last warning during a run
+  std::vector<double> dt_inputs;
+  int links_changed;    // links broke or were forgotten here since the estimate
+  enum EstimateWhen { ESTIMATE_SETUP, ESTIMATE_RENEIGHBOR, ESTIMATE_QUERY };
+  // at a setup and when LAMMPS reneighbors (from compute(), where the host
+  // copies of the table are current): make the estimate again if needed,
+  // print it and warn about the time step
+  void check_stable_timestep(EstimateWhen when);
+  // (when: what a warning during a run adds, or nothing)
+  void timestep_warning(const std::string &when);
+  // bring the host copies of what the estimate reads up to date (kk)
+  virtual void estimate_host_state() {}
+  MCAStableTimestep::Input stability_input();
+  std::vector<double> stability_inputs();
+  std::string timestep_hint() override;
 
   struct HostData;
   struct HostSums;

@@ -222,8 +222,8 @@ int PairMCALinked::partner_index(int i, tagint partner_tag)
     error->one(FLERR,
                "{}: the link of automaton {} to automaton {} is lost: the partner is "
                "farther than the communication cutoff {} (stretched link, or a deleted automaton); "
-               "increase it with comm_modify cutoff or pair_style mca cutoff",
-               label, atom->tag[i], partner_tag, cut_global + neighbor->skin);
+               "increase it with comm_modify cutoff or pair_style mca cutoff{}",
+               label, atom->tag[i], partner_tag, cut_global + neighbor->skin, timestep_hint());
   return domain->closest_image(i, j);
 }
 
@@ -279,6 +279,6 @@ void PairMCALinked::stretched_warning()
   if (nall > 0 && comm->me == 0)
     error->warning(FLERR,
                    "{}: {} links are longer than the cutoff {} at step {}; a link "
-                   "whose partner leaves the ghost atoms stops the run",
-                   label, nall / 2, cut_global, update->ntimestep);
+                   "whose partner leaves the ghost atoms stops the run{}",
+                   label, nall / 2, cut_global, update->ntimestep, timestep_hint());
 }

@@ -96,6 +96,9 @@ class PairMCALinked : public Pair, public MCALinkRowSync {
   int partner_index(int i, tagint partner_tag);
   MCAHostLinks host_links() const;
   void stretched_warning();
+  // what a blow-up message adds about the time step (pair mca: how it
+  // compares with the stable time step), or nothing
+  virtual std::string timestep_hint() { return {}; }
 };
 
 }    // namespace LAMMPS_NS

@@ -64,3 +64,31 @@ def test_errors_raise_python_exceptions(lmp):
     lmp.commands_string(lattice_box("fcc", 0.7184, 2))
     with pytest.raises(Exception, match="mca_set radius must be > 0"):
         lmp.command("mca_set all radius -1")
+
+
+def test_time_step_from_the_estimate(lmp):
+    """compute mca/timestep asked for before the first run (no links yet):
+    an error that says how to get the links; after 'run 0' the script sets
+    its time step from it, and the run then stays below the estimate."""
+    lmp.commands_string(lattice_box("fcc", 0.7184, 3) + """
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70e9 nu 0.3 rho 2700
+compute         dt all mca/timestep
+fix             integrate all nve/mca
+""")
+    with pytest.raises(Exception, match=r"Compute mca/timestep: the stable time step is estimated "
+                                        r"from the links of pair mca, which are made at the first "
+                                        r"run; use 'run 0' before asking for it"):
+        lmp.extract_compute("dt", lammps_module.LMP_STYLE_GLOBAL, lammps_module.LMP_TYPE_SCALAR)
+    lmp.command("run 0")
+    dt = lmp.extract_compute("dt", lammps_module.LMP_STYLE_GLOBAL, lammps_module.LMP_TYPE_SCALAR)
+    recommended = lmp.extract_compute("dt", lammps_module.LMP_STYLE_GLOBAL,
+                                      lammps_module.LMP_TYPE_VECTOR)[1]
+    assert 0.0 < dt < 1.0e-3
+    assert recommended == pytest.approx(0.7 * dt, rel=1e-15)
+    lmp.command(f"timestep {recommended}")
+    lmp.command("run 10")
+    ratio = lmp.extract_compute("dt", lammps_module.LMP_STYLE_GLOBAL,
+                                lammps_module.LMP_TYPE_VECTOR)[2]
+    assert ratio == pytest.approx(0.7, rel=1e-12)

@@ -1,0 +1,134 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_MCA_STABLE_TIMESTEP_H
+#define LMP_MCA_STABLE_TIMESTEP_H
+
+#include "mca_material.h"
+#include "mca_stability.h"
+#include "pair_mca_linked.h"
+#include "pointers.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   the stable time step of a scene of linked automata: the largest
+   eigenvalue omega^2 of the mass-scaled tangent stiffness of its links
+   (mca_stability.h), found by the Lanczos iteration on all automata and
+   their translations and rotations, and the damping ratio of that mode;
+   then dt_c = 2 (sqrt(1 + zeta^2) - zeta) / omega.  Run on the host at a
+   setup (and when the stiffness may have grown) by pair mca and mca/kk
+   alike; see doc/src/pair_mca.rst, "Stable time step"
+------------------------------------------------------------------------- */
+
+class MCAStableTimestep : protected Pointers {
+ public:
+  // who sends the estimate's per-atom values to the ghost atoms: the pair
+  // style, through its forward communication (comm_size values per atom)
+  class Comm {
+   public:
+    virtual void estimate_forward_comm() = 0;
+
+   protected:
+    ~Comm() = default;
+  };
+
+  // what the estimate reads, on the host
+  struct Input {
+    MCAHostLinks links;    // the link table and the partners
+    const int *type, *packing;
+    const double *rmass, *inertia;
+    const MCAKernels::MCAMaterial *material;    // by type
+    bool damping;                               // the link model has viscous damping
+  };
+
+  struct Result {
+    double dt;         // critical time step (inf without links)
+    double omega;      // angular frequency of the fastest mode
+    double zeta;       // its damping ratio (0 without damping)
+    int iterations;    // Lanczos steps
+    bigint nlinks;     // links that act (linked, or broken and pushing)
+  };
+
+  // the monitor: the largest stiffnesses of a link, mass-scaled by the
+  // automaton that meets them (normal kn/m, shear kt/m, spin kt q^2/J,
+  // bending kb/J: when one of them grows, the estimate may fall); the
+  // automaton with the largest trace of its mass-scaled block of the
+  // stiffness, its type and its stiffest link (lowest IDs among equals)
+  static constexpr int NMONITOR = 4;
+  struct Monitor {
+    double value[NMONITOR];
+    tagint atom, link_i, link_j;
+    int atom_type;
+  };
+
+  MCAStableTimestep(class LAMMPS *);
+  ~MCAStableTimestep() override;
+
+  Result estimate(const Input &, Comm *);
+  // (all ranks) it follows the stiffness through deformation, at the cost
+  // of one pass over the links
+  Monitor monitor(const Input &);
+
+  static constexpr int comm_size = 7;
+  int pack_forward_comm(int n, int *list, double *buf);
+  void unpack_forward_comm(int n, int first, double *buf);
+
+ private:
+  enum Stage { STAGE_SETUP, STAGE_MOTION, STAGE_SUMS };
+  int stage;
+  int nmax;
+  // per atom, local and ghost: inverse fabric tensor, predictor
+  // stiffness and whether the mean stress is predicted (sent once), the
+  // displacement and rotation of the vector the operator is applied to,
+  // and the two mean-stress sums s and r of each automaton
+  double **finv, *hpred, *predicted, **motion, **sums;
+  // local: square roots of mass and inertia; the right-hand sides and the
+  // diagonal of the mean-stress systems, the next Jacobi iterate
+  std::vector<double> sqrt_m, sqrt_j, rhs_fwd, rhs_tr, diag, next;
+
+  // the links of the local automata that act, each seen from its local
+  // automaton, kept for the Lanczos steps of one estimate in single
+  // precision (an estimate to 1e-4 needs no more; half the memory)
+  struct LinkEnd {
+    int j;        // the partner (local or ghost index)
+    int flags;    // LINKED: a link (not a broken pair); COUNT: this end counts the link in sums
+    float n[3], q_i, q_j, kn, kt, kb, a_i, a_j, beta_i, beta_j, damp, inv_cn, inv_ct;
+    float jacobi_fwd, jacobi_tr;    // weights of the partner's mean stress in the two systems
+    float weight;    // 1, 1/2 or 0: share of the link in sums over the local automata
+  };
+  enum { LINKED = 1 };
+  std::vector<LinkEnd> ends;
+  std::vector<int> first;    // ends of local automaton i: first[i] ... first[i + 1] - 1
+
+  void grow(int n);
+  void prepare(const Input &, Comm *);
+  void cache_links(const Input &);
+  MCAKernels::MCALinkTangent tangent(const LinkEnd &) const;
+  // y = M^-1/2 K_s M^-1/2 x on the local automata (6 per automaton)
+  void apply(const Input &, Comm *, const double *x, double *y);
+  // the motion of the local automata for a mass-scaled vector, sent to the ghosts
+  void set_motion(const Input &, Comm *, const double *x);
+  double dot(const std::vector<double> &a, const std::vector<double> &b) const;
+  // the link of local automaton i at row m seen from i, and its partner
+  void tangent_of(const Input &, int i, int m, int &j, MCAKernels::MCALinkTangent &t) const;
+  // the share of each link, so that a sum over the local automata counts it once
+  double link_weight(const Input &, int i, int j) const;
+  double damping_ratio(const Input &, Comm *, const std::vector<double> &x, double omega);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
