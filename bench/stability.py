@@ -113,10 +113,12 @@ pair_coeff      2 2 E {E2} nu ${{nu}} rho {rho2}
 SCENES["two materials E x100"] = block("fcc", 0.3, TWO.format(E2="7.0e12", rho2="2700"))
 SCENES["two materials rho /100"] = block("fcc", 0.3, TWO.format(E2="70.0e9", rho2="27"))
 SCENES["two materials E x100 rho /10"] = block("fcc", 0.3, TWO.format(E2="7.0e12", rho2="270"))
-# a tenth of the automata ten times lighter (type 2, density / 10)
+# a tenth of the automata (at random) ten times lighter, by mca_set mass
+# (pair mca keeps it); the moment of inertia follows the mass
 SCENES["a tenth 10x lighter"] = block("fcc", 0.3, """
-set             type 1 type/fraction 2 0.1 4321
-pair_coeff      2 2 E $E nu ${nu} rho 270
+variable        light atom random(0,1,4321)<0.1
+variable        m atom 2700*4*sqrt(2)*0.254^3*(1-0.9*v_light)
+mca_set         all mass v_m
 """)
 # radii scattered by +-20 % before the links are made (stress-free start)
 SCENES["radii +-20 %"] = block("fcc", 0.3, """

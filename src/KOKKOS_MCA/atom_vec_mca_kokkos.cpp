@@ -38,8 +38,8 @@ template class AtomVecMCAStyle<AtomVecKokkos>;
 
 // number of per-atom fields atom_style mca grows besides the common ones
 // (molecule, bonds and specials, omega, torque, radius, rmass, quat and
-// the nine mca_* fields); grow() below must grow each of them
-static constexpr int MCA_NGROW = 20;
+// the ten mca_* fields); grow() below must grow each of them
+static constexpr int MCA_NGROW = 21;
 
 /* ---------------------------------------------------------------------- */
 
@@ -60,6 +60,7 @@ AtomVecMCAKokkos::AtomVecMCAKokkos(LAMMPS *lmp) :
 AtomVecMCAKokkos::~AtomVecMCAKokkos()
 {
   memoryKK->destroy_kokkos(k_packing, packing);
+  memoryKK->destroy_kokkos(k_given, given);
   memoryKK->destroy_kokkos(k_volume, volume);
   memoryKK->destroy_kokkos(k_inertia, inertia);
   memoryKK->destroy_kokkos(k_smean, smean);
@@ -147,6 +148,7 @@ void AtomVecMCAKokkos::grow(int n)
   atom->quat = quat;    // the field lists reach the orientation through Atom
 #endif
   memoryKK->grow_kokkos(k_packing, packing, nmax, "atom:mca_packing");
+  memoryKK->grow_kokkos(k_given, given, nmax, "atom:mca_given");
   memoryKK->grow_kokkos(k_volume, volume, nmax, "atom:mca_volume");
   memoryKK->grow_kokkos(k_inertia, inertia, nmax, "atom:mca_inertia");
   memoryKK->grow_kokkos(k_smean, smean, nmax, "atom:mca_smean");
@@ -214,6 +216,7 @@ template <class Apply> void AtomVecMCAKokkos::for_each_view(MCAKokkos::mask_t ma
   if (mask & TORQUE_MASK) apply(atomKK->k_torque);
   if (mask & MCA_GEOMETRY_MASK) {
     apply(k_packing);
+    apply(k_given);
     apply(k_volume);
     apply(k_inertia);
   }

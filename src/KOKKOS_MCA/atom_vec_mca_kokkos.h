@@ -32,7 +32,7 @@ namespace LAMMPS_NS {
 // otherwise (those of the DPD styles in 2021; unused bits above 2023's)
 #ifdef MCA_HAVE_KK_AVEC_VIRTUAL
 enum : uint64_t {
-  MCA_GEOMETRY_MASK = 0x0100000000000000,    // packing, volume, inertia
+  MCA_GEOMETRY_MASK = 0x0100000000000000,    // packing, volume, inertia, given
   MCA_STATE_MASK = 0x0200000000000000,       // smean, stress, seq, eeq, epsp, damage
   MCA_QUAT_MASK = 0x0400000000000000         // orientation
 };
@@ -102,7 +102,7 @@ class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
 #endif
 
   // the MCA fields; the host pointers of MCAAtomFields alias their host views
-  MCAKokkos::dual_int_1d k_packing;
+  MCAKokkos::dual_int_1d k_packing, k_given;
   MCAKokkos::dual_double_1d k_volume, k_inertia, k_smean, k_seq, k_eeq, k_epsp, k_damage;
   MCAKokkos::dual_double_2d k_stress, k_quat;
 

@@ -29,7 +29,7 @@ using namespace LAMMPS_NS;
 MCAAtomFields::MCAAtomFields() :
     radius(nullptr), rmass(nullptr), omega(nullptr), quat(nullptr), packing(nullptr),
     volume(nullptr), inertia(nullptr), smean(nullptr), stress(nullptr), seq(nullptr), eeq(nullptr),
-    epsp(nullptr), damage(nullptr)
+    epsp(nullptr), damage(nullptr), given(nullptr)
 {
 }
 

@@ -49,6 +49,12 @@ class MCAAtomFields {
   double *eeq;        // equivalent strain
   double *epsp;       // accumulated equivalent plastic strain
   double *damage;     // damage 0 (intact) ... 1 (all links broken)
+  // what the user gave an automaton (mca_set): its mass (or density),
+  // its moment of inertia; pair mca derives the others from the material.
+  // FROM_DATA: read from a data file, whose masses pair mca replaces
+  // (and says so) at its next run
+  int *given;
+  enum { GIVEN_MASS = 1, GIVEN_INERTIA = 2, FROM_DATA = 4 };
 
   // set the derived geometry (volume, inertia) of automaton i from its
   // packing, radius and mass; shared with the mca_set command
@@ -86,6 +92,8 @@ template <class AtomVecBase> class AtomVecMCAStyle : public AtomVecBase, public 
   void write_data(FILE *, int, double **) override;
   void pack_data_pre(int) override;
   void pack_data_post(int) override;
+  void pack_restart_pre(int) override;
+  void pack_restart_post(int) override;
 
   int property_atom(MCACompat::property_name_t) override;
   void pack_property_atom(int, double *, int, int) override;

@@ -62,6 +62,7 @@ AtomVecMCAStyle<AtomVecBase>::AtomVecMCAStyle(LAMMPS *_lmp) :
   MCACompat::register_peratom(atom, "mca_eeq", &eeq, Atom::DOUBLE, 0);
   MCACompat::register_peratom(atom, "mca_epsp", &epsp, Atom::DOUBLE, 0);
   MCACompat::register_peratom(atom, "mca_damage", &damage, Atom::DOUBLE, 0);
+  MCACompat::register_peratom(atom, "mca_given", &given, Atom::INT, 0);
 
   // orientation: LAMMPS has a per-atom quaternion since 2022, before that
   // this style provides its own array under the same name
@@ -83,17 +84,22 @@ AtomVecMCAStyle<AtomVecBase>::AtomVecMCAStyle(LAMMPS *_lmp) :
   "mca_eeq mca_epsp mca_damage"
 #define MCA_BONDS "num_bond bond_type bond_atom nspecial special"
 
-  this->fields_grow = MCACompat::fields("molecule " MCA_BONDS " omega torque " MCA_PERATOM);
-  this->fields_copy = MCACompat::fields("molecule " MCA_BONDS " omega " MCA_PERATOM);
+  // mca_given moves with its automaton; restart files carry it in the
+  // signs of volume and inertia (pack_restart_pre), which keeps the
+  // layout of files written before it existed
+  this->fields_grow =
+      MCACompat::fields("molecule " MCA_BONDS " omega torque mca_given " MCA_PERATOM);
+  this->fields_copy = MCACompat::fields("molecule " MCA_BONDS " omega mca_given " MCA_PERATOM);
   this->fields_comm = MCACompat::fields("");
   this->fields_comm_vel = MCACompat::fields("omega");
   this->fields_reverse = MCACompat::fields("torque");
   this->fields_border = MCACompat::fields("molecule " MCA_PERATOM);
   this->fields_border_vel = MCACompat::fields("molecule omega " MCA_PERATOM);
-  this->fields_exchange = MCACompat::fields("molecule " MCA_BONDS " omega " MCA_PERATOM);
+  this->fields_exchange = MCACompat::fields("molecule " MCA_BONDS " omega mca_given " MCA_PERATOM);
   this->fields_restart =
       MCACompat::fields("molecule num_bond bond_type bond_atom omega " MCA_PERATOM);
-  this->fields_create = MCACompat::fields("molecule num_bond nspecial omega " MCA_PERATOM);
+  this->fields_create =
+      MCACompat::fields("molecule num_bond nspecial omega mca_given " MCA_PERATOM);
   this->fields_data_atom =
       MCACompat::fields("id molecule type mca_packing radius mca_volume rmass mca_inertia x");
   this->fields_data_vel = MCACompat::fields("id v omega");
@@ -116,6 +122,7 @@ template <class AtomVecBase> AtomVecMCAStyle<AtomVecBase>::~AtomVecMCAStyle()
   memory->destroy(eeq);
   memory->destroy(epsp);
   memory->destroy(damage);
+  memory->destroy(given);
 #ifndef MCA_HAVE_ATOM_QUAT
   memory->destroy(quat);
 #endif
@@ -288,6 +295,7 @@ template <class AtomVecBase> void AtomVecMCAStyle<AtomVecBase>::data_atom_post(i
   quat[ilocal][1] = quat[ilocal][2] = quat[ilocal][3] = 0.0;
   smean[ilocal] = seq[ilocal] = eeq[ilocal] = epsp[ilocal] = damage[ilocal] = 0.0;
   for (int k = 0; k < NSTRESS; k++) stress[ilocal][k] = 0.0;
+  given[ilocal] = FROM_DATA;    // pair mca replaces the mass by rho Omega, and says so
   num_bond[ilocal] = 0;
   nspecial[ilocal][0] = nspecial[ilocal][1] = nspecial[ilocal][2] = 0;
 }
@@ -330,12 +338,39 @@ void AtomVecMCAStyle<AtomVecBase>::write_data(FILE *fp, int n, double **buf)
 }
 
 /* ----------------------------------------------------------------------
-   special lists are rebuilt after reading a restart file
+   restart files: what the user gave an automaton travels in the signs of
+   its volume (mass given) and moment of inertia (inertia given), both > 0
+   otherwise, so files of earlier versions read with nothing given
+------------------------------------------------------------------------- */
+
+template <class AtomVecBase> void AtomVecMCAStyle<AtomVecBase>::pack_restart_pre(int ilocal)
+{
+  if (given[ilocal] & GIVEN_MASS) volume[ilocal] = -volume[ilocal];
+  if (given[ilocal] & GIVEN_INERTIA) inertia[ilocal] = -inertia[ilocal];
+}
+
+template <class AtomVecBase> void AtomVecMCAStyle<AtomVecBase>::pack_restart_post(int ilocal)
+{
+  if (given[ilocal] & GIVEN_MASS) volume[ilocal] = -volume[ilocal];
+  if (given[ilocal] & GIVEN_INERTIA) inertia[ilocal] = -inertia[ilocal];
+}
+
+/* ----------------------------------------------------------------------
+   special lists are rebuilt after reading a restart file; what was given
 ------------------------------------------------------------------------- */
 
 template <class AtomVecBase> void AtomVecMCAStyle<AtomVecBase>::unpack_restart_init(int ilocal)
 {
   nspecial[ilocal][0] = nspecial[ilocal][1] = nspecial[ilocal][2] = 0;
+  given[ilocal] = 0;
+  if (volume[ilocal] < 0.0) {
+    volume[ilocal] = -volume[ilocal];
+    given[ilocal] |= GIVEN_MASS;
+  }
+  if (inertia[ilocal] < 0.0) {
+    inertia[ilocal] = -inertia[ilocal];
+    given[ilocal] |= GIVEN_INERTIA;
+  }
 }
 
 /* ----------------------------------------------------------------------

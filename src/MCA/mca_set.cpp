@@ -261,6 +261,11 @@ void MCASet::command(int narg, char **arg)
     avec->volume[i] = g.volume;
     atom->rmass[i] = g.mass;
     avec->inertia[i] = g.inertia;
+    // pair mca keeps a mass or inertia given here (and the mass it has
+    // already, for an inertia given alone)
+    if (values[MASS].given || values[DENSITY].given) avec->given[i] |= MCAAtomFields::GIVEN_MASS;
+    if (values[INERTIA].given) avec->given[i] |= MCAAtomFields::GIVEN_INERTIA;
+    avec->given[i] &= ~MCAAtomFields::FROM_DATA;
 
     if (values[SMEAN].given) avec->smean[i] = values[SMEAN].at(i);
     if (values[SEQ].given) avec->seq[i] = values[SEQ].at(i);

@@ -449,7 +449,9 @@ void PairMCA::init_style()
 
 /* ----------------------------------------------------------------------
    the mass and moment of inertia of an automaton follow from the density
-   of its material and its virtual cell
+   of its material and its virtual cell, unless mca_set gave them (the
+   type's density is the default, not an override).  The masses of a data
+   file are replaced, and the replacement is reported
 ------------------------------------------------------------------------- */
 
 void PairMCA::set_masses()
@@ -458,10 +460,27 @@ void PairMCA::set_masses()
   const int *type = atom->type;
   double *rmass = atom->rmass;
   const double *radius = atom->radius;
+  int *given = avec->given;
+  bigint replaced = 0;
   for (int i = 0; i < nlocal; i++) {
-    rmass[i] = materials.type[type[i]].density * avec->volume[i];
-    avec->inertia[i] = cell_inertia(avec->packing[i], rmass[i], radius[i]);
+    if (!(given[i] & MCAAtomFields::GIVEN_MASS)) {
+      const double mass = materials.type[type[i]].density * avec->volume[i];
+      if ((given[i] & MCAAtomFields::FROM_DATA) && fabs(rmass[i] - mass) > 1.0e-12 * mass)
+        replaced++;
+      rmass[i] = mass;
+    }
+    given[i] &= ~MCAAtomFields::FROM_DATA;
+    if (!(given[i] & MCAAtomFields::GIVEN_INERTIA))
+      avec->inertia[i] = cell_inertia(avec->packing[i], rmass[i], radius[i]);
   }
+  bigint replaced_all = 0;
+  MPI_Allreduce(&replaced, &replaced_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (replaced_all > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "Pair mca: the masses of {} automata read from a data file differ from rho "
+                   "Omega of their type and are set to it; to keep an automaton's own mass, give "
+                   "it with mca_set mass (or density) after read_data",
+                   replaced_all);
 }
 
 /* ----------------------------------------------------------------------

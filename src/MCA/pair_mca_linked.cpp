@@ -116,6 +116,9 @@ void PairMCALinked::create_links()
   const int row_size = links->row_size;
   bigint nlocal_links = 0;
   int duplicate = 0;
+  // how far the lengths of the new links are from the sums of the radii
+  // (a link is stress-free at the length it is made with)
+  double misfit = 0.0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     int &n = links->nlinks[i];
@@ -129,6 +132,10 @@ void PairMCALinked::create_links()
       double *row = &links->history[i][n * row_size];
       for (int k = 0; k < row_size; k++) row[k] = 0.0;
       init_link_row(i, j, row);
+      const double sum = atom->radius[i] + atom->radius[j];
+      const double dx = atom->x[j][0] - atom->x[i][0], dy = atom->x[j][1] - atom->x[i][1],
+                   dz = atom->x[j][2] - atom->x[i][2];
+      misfit = MAX(misfit, fabs(sqrt(dx * dx + dy * dy + dz * dz) - sum) / sum);
       links->partner[i][n] = tag[j];
       n++;
     }
@@ -146,11 +153,15 @@ void PairMCALinked::create_links()
 
   bigint nall_links;
   MPI_Allreduce(&nlocal_links, &nall_links, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  double misfit_all;
+  MPI_Allreduce(&misfit, &misfit_all, 1, MPI_DOUBLE, MPI_MAX, world);
   if (comm->me == 0) {
     std::string name(label);
     name[0] = tolower(name[0]);
-    utils::logmesg(lmp, "{}: {} links made, at most {} per automaton\n", name, nall_links / 2,
-                   nmostall);
+    utils::logmesg(lmp,
+                   "{}: {} links made, at most {} per automaton; stress-free at their lengths, "
+                   "which differ from R_i + R_j by up to {:.3g} %\n",
+                   name, nall_links / 2, nmostall, 100.0 * misfit_all);
   }
 }
 
