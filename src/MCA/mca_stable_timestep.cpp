@@ -640,6 +640,8 @@ MCAStableTimestep::Result MCAStableTimestep::estimate(const Input &in, Comm *com
   }
   res.dt = (res.omega > 0.0) ? critical_timestep(res.omega, res.zeta)
                              : std::numeric_limits<double>::infinity();
+  // the tangents are made again for the next estimate
+  std::vector<LinkEnd>().swap(ends);
   return res;
 }
 

@@ -495,6 +495,10 @@ void PairMCA::set_masses()
 // relative change of the monitor that makes the estimate again
 static constexpr double MONITOR_TOL = 0.02;
 
+#if __cplusplus < 201703L
+constexpr double PairMCA::RECOMMENDED_FRACTION;    // (C++14: a definition where it is bound)
+#endif
+
 MCAStableTimestep::Input PairMCA::stability_input()
 {
   MCAStableTimestep::Input in;
