@@ -28,6 +28,8 @@ from mcatest import UNITTEST, kokkos_build
 
 TESTS = UNITTEST / "force-styles" / "tests"
 KOKKOS_ARGS = ("-k", "on", "t", "2", "-sf", "kk")
+# pressure x volume per energy in LAMMPS's metal units (bar A^3 / eV)
+METAL_NKTV2P = 1.6021765e6
 
 
 def lines(text):
@@ -134,4 +136,32 @@ def test_pair_mca_kk_yaml(tmp_path, newton, name):
         err = relative_error(virial, stress_vector(config[f"{stage}_stress"]))
         # the pressure compute divides by the volume and the print multiplies
         # again: 2 more roundings on top of the kernel's
+        assert err <= 10 * 5 * eps, f"{stage}_stress: {err:.2e}"
+
+
+@pytest.mark.parametrize("newton", ["on", "off"])
+@pytest.mark.parametrize("name", ["atomic-pair-gp_morse", "atomic-pair-gp_lj_cut"])
+def test_gp_pair_kk_yaml(tmp_path, newton, name):
+    """The GP pair styles' kk variants (the kernels of LAMMPS's kk styles with
+    the parameters of the scale levels) against the CPU reference data."""
+    build = kokkos_build()
+    config = yaml.safe_load((TESTS / f"{name}.yaml").read_text())
+    eps = float(config["epsilon"])
+    result = build.run(pair_script(config, newton), tmp_path, extra_args=KOKKOS_ARGS)
+    output = result.stdout
+    style = config["pair_style"].split()[0]
+    assert re.search(rf"pair {re.escape(style)}/kk", output), f"pair style is not {style}/kk"
+    for stage, factor in (("init", 5), ("run", 25)):
+        reference = per_atom(config[f"{stage}_forces"])
+        forces = read_rows(tmp_path / f"{stage}.dump", 3)
+        assert sorted(forces) == sorted(reference)
+        err = max(relative_error(forces[i], reference[i]) for i in reference)
+        print(f"newton {newton} {stage}_forces: largest relative error {err:.2e}")
+        assert err <= factor * eps, f"{stage}_forces: {err:.2e} > {factor} x {eps}"
+        energy = printed(output, "ENERGY", stage)[0]
+        assert relative_error(energy, float(config[f"{stage}_vdwl"])) <= 5 * eps
+        # (the YAML stores the virial in energy units; the print gives
+        # pressure x volume: bar A^3 in metal units)
+        virial = printed(output, "VIRIAL", stage) / METAL_NKTV2P
+        err = relative_error(virial, stress_vector(config[f"{stage}_stress"]))
         assert err <= 10 * 5 * eps, f"{stage}_stress: {err:.2e}"
