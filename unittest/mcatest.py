@@ -50,6 +50,15 @@ class Build:
                 return candidate
         raise RuntimeError(f"unit-test program {program} not built in {self.path}")
 
+    def environment(self):
+        """mpi_environment, and the potential files of the build's LAMMPS
+        tree (LAMMPS looks for a potential file there when it is not in
+        the working directory)."""
+        env = mpi_environment()
+        if self.tree is not None:
+            env.setdefault("LAMMPS_POTENTIALS", str(self.tree / "potentials"))
+        return env
+
     def run(self, script, cwd, nprocs=1, variables=None, timeout=600, check=True,
             extra_args=(), name="in.test"):
         """Run an input script (text) in directory cwd; return the completed process.
@@ -68,7 +77,7 @@ class Build:
             cmd += ["-var", key, str(value)]
         cmd += list(extra_args)
         result = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True,
-                                timeout=timeout, env=mpi_environment())
+                                timeout=timeout, env=self.environment())
         if check and result.returncode != 0:
             tail = (result.stdout + result.stderr)[-4000:]
             raise AssertionError(f"LAMMPS ({self.name}) failed with status "

@@ -104,6 +104,26 @@ int GPLevels::coeff(int narg, char **arg, int ilo, int ihi, int jlo, int jhi)
   return narg - 2;
 }
 
+int GPLevels::coeff_types(int narg, char **arg, int first)
+{
+  const int ntypes = static_cast<int>(level.size()) - 1;
+  if (narg != first + 1 + ntypes || strcmp(arg[first], "level") != 0)
+    error->all(FLERR,
+               "Pair_coeff for pair style {}: * * file, the {} element names, then the scale level "
+               "of each type: 'level n_1 ... n_{}' (n = 1 for atoms); got {} arguments",
+               style, ntypes, ntypes, narg);
+  for (int t = 1; t <= ntypes; t++) {
+    const char *word = arg[first + t];
+    const int n = utils::inumeric(FLERR, word, false, lmp);
+    if (n < 1 || n > MAX_LEVEL)
+      error->all(FLERR,
+                 "Pair_coeff for pair style {}: the level of type {} must be from 1 to {}, got {}",
+                 style, t, MAX_LEVEL, word);
+    level[t] = n;
+  }
+  return first;
+}
+
 void GPLevels::check_all_set() const
 {
   for (std::size_t t = 1; t < level.size(); t++)

@@ -83,6 +83,9 @@ class GPLevels : protected Pointers {
   // "level n" at the end of pair_coeff I J ...; the levels of types
   // ilo..ihi and jlo..jhi; returns the number of arguments before it
   int coeff(int narg, char **arg, int ilo, int ihi, int jlo, int jhi);
+  // "level n_1 ... n_N" from arg[first] on, N the number of types (the
+  // pair_coeff * * file elements ... of a many-body style); returns first
+  int coeff_types(int narg, char **arg, int first);
   void allocate(int ntypes);
   // an error naming the first type without a level
   void check_all_set() const;

@@ -81,6 +81,8 @@ template <class Base, class Potential> class PairGPStyle : public Base {
   void read_restart(FILE *) override;
   void write_data(FILE *) override;
   void write_data_all(FILE *) override;
+  // "gp_level": the level of each atom type (for fix gp/link)
+  void *extract(const char *, int &) override;
 
  protected:
   GPPairCoeffs coeffs;

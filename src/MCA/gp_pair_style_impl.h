@@ -25,6 +25,8 @@
 #include "atom.h"
 #include "error.h"
 
+#include <cstring>
+
 namespace LAMMPS_NS {
 
 template <class Base, class Potential>
@@ -113,6 +115,16 @@ template <class Base, class Potential> void PairGPStyle<Base, Potential>::write_
 template <class Base, class Potential> void PairGPStyle<Base, Potential>::write_data_all(FILE *fp)
 {
   coeffs.write_data_all(fp);
+}
+
+template <class Base, class Potential>
+void *PairGPStyle<Base, Potential>::extract(const char *str, int &dim)
+{
+  if (strcmp(str, "gp_level") == 0) {
+    dim = 1;
+    return coeffs.levels.level.data();
+  }
+  return Base::extract(str, dim);
 }
 
 }    // namespace LAMMPS_NS

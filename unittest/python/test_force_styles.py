@@ -14,7 +14,7 @@ import subprocess
 
 import pytest
 
-from mcatest import UNITTEST, mpi_environment
+from mcatest import UNITTEST
 
 TESTS = UNITTEST / "force-styles" / "tests"
 PROGRAMS = {"fix-timestep-": ("test_fix_timestep", "FixTimestep.plain"),
@@ -36,7 +36,7 @@ def test_yaml(build, tmp_path, yaml_file):
     program, main_test = program_for(yaml_file)
     result = subprocess.run([str(build.tester(program)), str(yaml_file), "-d", str(TESTS)],
                             cwd=tmp_path, capture_output=True, text=True, timeout=600,
-                            env=mpi_environment())
+                            env=build.environment())
     output = result.stdout + result.stderr
     failures = [line for line in output.splitlines() if "Failure" in line or "[  FAILED  ]" in line]
     assert result.returncode == 0, "\n".join(failures[:40]) or output[-3000:]

@@ -1,17 +1,22 @@
-"""GP scale levels of pair_style gp/morse and gp/lj/cut (doc/src/pair_gp.rst;
-the GP digest, sec. 1.1, 1.3 and 4.1: Cu, Morse and Lennard-Jones, k = 2).
+"""GP scale levels of the pair styles gp/morse, gp/lj/cut, gp/eam/alloy and
+gp/eam/fs (doc/src/pair_gp.rst; the GP digest, sec. 1.1, 1.3 and 4.1: Cu,
+Morse, Lennard-Jones and EAM, Fe EAM, k = 2).
 
 * scale independence: pure level-1, 2 and 3 periodic crystals of the same
   size, strained alike, have the same energy per atom represented and the
   same stress (energy-consistent scaling: exact but for round-off; bound
   1e-12, the sums over 2048 and 32 particles differ in their order), for
-  both potentials; the kk variants give the same;
+  each potential; the kk variants give the same;
+* EAM: level 1 is the atomic style (eam/alloy, eam/fs: energy, forces and
+  stress to round-off, 1e-13); types of different levels do not interact
+  (two levels in one box: the energy of the two alone, densities
+  included, to 1e-12);
 * dynamics: a level-n system is the atomic one with lengths and times
   scaled by s (the period of a wave at level 3 is 4 times that of the
-  level-1 box a quarter the size, to 1e-5); the period of a long P
-  standing wave in a box of the same size at levels 1-3 is the same with
-  the energy-consistent scaling (within 2 %: the coarser lattices have
-  fewer planes per wavelength, 1.1 % at level 3), 1/sqrt(s)
+  level-1 box a quarter the size, to 1e-5; Morse and EAM); the period of a
+  long P standing wave in a box of the same size at levels 1-3 is the
+  same with the energy-consistent scaling (within 2 %: the coarser
+  lattices have fewer planes per wavelength, 1.1 % at level 3), 1/sqrt(s)
   with the thesis's force l f (pmap) and 1/s with l s f (pmap_invmap),
   the wave speeds the digest derives (within 2 %);
 * bad input: clear errors naming the argument and the allowed values.
@@ -19,25 +24,35 @@ the GP digest, sec. 1.1, 1.3 and 4.1: Cu, Morse and Lennard-Jones, k = 2).
 
 import re
 
+import numpy as np
 import pytest
 
 import mcatest
 
 CU = "0.3429 1.3588 2.866"    # Girifalco-Weizer Morse of Cu: D0 (eV), alpha (1/A), r0 (A)
-POTENTIALS = {"morse": ("gp/morse 6.5", CU), "lj/cut": ("gp/lj/cut 5.5", "0.4093 2.338")}
+# lattice, a0 (A), mass (g/mol), pair_style, pair_coeff of one type of the level
+POTENTIALS = {
+    "morse": ("fcc", 3.615, 63.546, "gp/morse 6.5", "1 1 " + CU + " level {level}"),
+    "lj/cut": ("fcc", 3.615, 63.546, "gp/lj/cut 5.5", "1 1 0.4093 2.338 level {level}"),
+    # (the EAM styles set the masses l m0 from the file's)
+    "eam/alloy": ("fcc", 3.615, 63.546, "gp/eam/alloy",
+                  "* * Cu_mishin1.eam.alloy Cu level {level}"),
+    "eam/fs": ("bcc", 2.855324, 55.845, "gp/eam/fs", "* * Fe_mm.eam.fs Fe level {level}"),
+}
+EAM = ["eam/alloy", "eam/fs"]
 
 CRYSTAL = """
 variable        s equal 2^({level}-1)
 variable        l equal v_s^3
 units           metal
 boundary        p p p
-lattice         fcc $(3.615*v_s)
+lattice         {lattice} $({a0}*v_s)
 region          box block 0 $({nx}/v_s) 0 $({ny}/v_s) 0 $({ny}/v_s)
 create_box      1 box
 create_atoms    1 box
-mass            1 $(63.546*v_l)
+mass            1 $({m0}*v_l)
 pair_style      {style} ratio 2 scaling {scaling}
-pair_coeff      1 1 {coeffs} level {level}
+pair_coeff      {coeffs}
 """
 
 STATIC = """
@@ -51,8 +66,9 @@ print           "RESULT $(v_e:%.17g) $(pxx:%.17g) $(pyy:%.17g) $(pzz:%.17g) $(px
 
 
 def crystal(level, nx, ny, scaling, potential="morse"):
-    style, coeffs = POTENTIALS[potential]
-    return CRYSTAL.format(level=level, nx=nx, ny=ny, scaling=scaling, style=style, coeffs=coeffs)
+    lattice, a0, m0, style, coeffs = POTENTIALS[potential]
+    return CRYSTAL.format(level=level, nx=nx, ny=ny, scaling=scaling, lattice=lattice, a0=a0,
+                          m0=m0, style=style, coeffs=coeffs.format(level=level))
 
 
 def static(build, directory, level, extra=(), potential="morse"):
@@ -88,12 +104,12 @@ unfix           relax
 reset_timestep  0
 variable        k equal 2*PI/lx
 compute         d all displace/atom
-variable        ux atom 0.01*sin(v_k*x)
+variable        ux atom {amplitude}*sin(v_k*x)
 displace_atoms  all move v_ux 0 0 units box
 variable        proj atom c_d[1]*sin(v_k*x)
 compute         proj all reduce sum v_proj
 fix             nve all nve
-timestep        0.001
+timestep        {dt}
 variable        t equal time
 variable        p equal c_proj
 fix             out all print 10 "${{t}} ${{p}}" file wave.dat screen no
@@ -101,10 +117,13 @@ run             {steps}
 """
 
 
-def wave_period(build, directory, level, scaling, nx=32):
+def wave_period(build, directory, level, scaling, nx=32, potential="morse", scaled=False):
     """The first zero of the projection A cos(omega t) of the displacement on
-    the standing wave: a quarter period (ps)."""
-    script = crystal(level, nx, 4, scaling) + WAVE.format(steps=1000)
+    the standing wave of amplitude 0.01 A: a quarter period (ps).  With
+    scaled, amplitude and time step are s times those of level 1."""
+    s = 2.0 ** (level - 1) if scaled else 1.0
+    script = crystal(level, nx, 4, scaling, potential) + WAVE.format(
+        steps=1000, amplitude=0.01 * s, dt=0.001 * s)
     build.run(script, directory)
     rows = [tuple(map(float, line.split())) for line in (directory / "wave.dat").read_text()
             .splitlines() if not line.startswith("#")]
@@ -126,18 +145,152 @@ def test_wave_period_of_each_scaling(build, tmp_path, scaling, exponent):
         assert ratio == pytest.approx(s**exponent, rel=0.02), f"level {level}: {ratio:.4f}"
 
 
-def test_level_is_the_atomic_system_scaled(build, tmp_path):
+@pytest.mark.parametrize("potential", ["morse", "eam/fs"])
+def test_level_is_the_atomic_system_scaled(build, tmp_path, potential):
     """Energy-consistent scaling: a level-n system is the atomic one with
     lengths and times scaled by s (m0 r'' = -phi'(r) / s^2 in the mapped
-    coordinates), so the wave of the box L at level 3 has 4 times the
-    period of the wave of the box L/4 at level 1, the same number of
-    lattice planes per wavelength (bound 1e-5: the zero is interpolated
-    between samples, and level 3 integrates with the step of 1/4 fs at
-    level 1)."""
-    t3 = wave_period(build, tmp_path / "l3", 3, "energy", nx=32)
-    t1 = wave_period(build, tmp_path / "l1", 1, "energy", nx=8)
-    print(f"\nlevel 3, 32 cells: {t3:.8f} ps; 4 x level 1, 8 cells: {4 * t1:.8f} ps")
-    assert t3 == pytest.approx(4.0 * t1, rel=1e-5)
+    coordinates), so the wave of the box L at level 3, of 4 times the
+    amplitude, integrated with 4 times the time step, is the wave of the
+    box L/4 at level 1, the same number of lattice planes per wavelength,
+    in 4 times the time: its period is 4 times the other to round-off
+    (the relaxations, the integration and the interpolated zero are the
+    same; bound 1e-9)."""
+    t3 = wave_period(build, tmp_path / "l3", 3, "energy", nx=32, potential=potential,
+                     scaled=True)
+    t1 = wave_period(build, tmp_path / "l1", 1, "energy", nx=8, potential=potential)
+    print(f"\n{potential}: level 3, 32 cells: {t3:.12f} ps; 4 x level 1, 8 cells: "
+          f"{4 * t1:.12f} ps (relative difference {abs(t3 / (4 * t1) - 1):.1e})")
+    assert t3 == pytest.approx(4.0 * t1, rel=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# EAM: level 1 is the atomic style; levels do not interact
+
+PERTURBED = """
+units           metal
+boundary        p p p
+lattice         {lattice} {a0}
+region          box block 0 4 0 4 0 4
+create_box      2 box
+create_atoms    1 box
+{second}
+displace_atoms  all random 0.15 0.15 0.15 4321 units box
+change_box      all triclinic
+change_box      all x scale 1.01 y scale 0.995 xy final 0.3 remap units box
+{delete}
+pair_style      {style}
+pair_coeff      * * {file} {element} {element}{levels}
+thermo_style    custom step pe pxx pyy pzz pxy pxz pyz
+thermo_modify   norm no
+run             0
+print           "RESULT $(pe:%.17g) $(pxx:%.17g) $(pyy:%.17g) $(pzz:%.17g) $(pxy:%.17g) $(pxz:%.17g) $(pyz:%.17g)"
+write_dump      all custom forces.dump id x y z fx fy fz modify format float %.17g sort id
+"""
+
+EAM_FILES = {"eam/alloy": ("fcc", 3.615, "Cu_mishin1.eam.alloy", "Cu"),
+             "eam/fs": ("bcc", 2.855324, "Fe_mm.eam.fs", "Fe")}
+
+
+def perturbed(build, directory, potential, style, levels="", two_levels=False, delete="",
+              extra=(), nprocs=1, by_position=False):
+    """A crystal displaced at random and strained: energy, stress and forces
+    (by atom ID, or by position: create_atoms numbers the atoms in the
+    order of the ranks).  Its atoms are of types 1 and 2 at
+    random, or, with two_levels, of type 1, and type 2 are particles on the
+    lattice scaled by 2 in the same box."""
+    lattice, a0, file, element = EAM_FILES[potential]
+    second = (f"lattice {lattice} {2 * a0} origin 0.3 0.2 0.1\ncreate_atoms 2 box"
+              if two_levels else "set type 1 type/fraction 2 0.5 1234")
+    script = PERTURBED.format(lattice=lattice, a0=a0, second=second, style=style, file=file,
+                              element=element, levels=levels, delete=delete)
+    result = build.run(script, directory, extra_args=extra, nprocs=nprocs)
+    values = np.array([float(v) for v in re.search(r"RESULT (.*)", result.stdout).group(1)
+                       .split()])
+    dump = mcatest.read_dump(directory / "forces.dump")[0]
+    keys = (dump["id"].astype(int) if not by_position else
+            [tuple(np.round([x, y, z], 6)) for x, y, z in zip(dump["x"], dump["y"], dump["z"])])
+    forces = {k: np.array([fx, fy, fz]) for k, fx, fy, fz in
+              zip(keys, dump["fx"], dump["fy"], dump["fz"])}
+    return values, forces
+
+
+def force_difference(a, b):
+    """Largest force difference over the atoms of b, relative to b's largest."""
+    assert sorted(a) == sorted(b)
+    diff = max(np.abs(a[i] - b[i]).max() for i in b)
+    return diff / max(np.abs(f).max() for f in b.values())
+
+
+@pytest.mark.parametrize("potential", EAM)
+def test_eam_level_one_is_the_atomic_style(build, tmp_path, potential):
+    """Every type at level 1: the level tables are the atomic spline itself
+    (each row re-expanded with a = 0, b = 1), evaluated by the same kernel:
+    energy, stress and forces of the atomic style to round-off (1e-13 of
+    the largest)."""
+    gp, gp_f = perturbed(build, tmp_path / "gp", potential, f"gp/{potential}", " level 1 1")
+    atomic, atomic_f = perturbed(build, tmp_path / "atomic", potential, potential)
+    scale = np.abs(atomic).max()
+    df = force_difference(gp_f, atomic_f)
+    print(f"\n{potential}: energy and stress differ by {np.abs(gp - atomic).max() / scale:.2e}, "
+          f"forces by {df:.2e} of the largest")
+    assert np.abs(gp - atomic).max() <= 1e-13 * scale
+    assert df <= 1e-13
+
+
+@pytest.mark.parametrize("potential", EAM)
+def test_eam_levels_do_not_interact(build, tmp_path, potential):
+    """Atoms (level 1) and level-2 particles in one box: the energy, stress
+    and forces are those of each level alone (pair terms and densities),
+    to round-off (1e-12)."""
+    both, both_f = perturbed(build, tmp_path / "both", potential, f"gp/{potential}", " level 1 2",
+                             two_levels=True)
+    alone = {}
+    for keep, drop in ((1, 2), (2, 1)):
+        alone[keep] = perturbed(build, tmp_path / f"only{keep}", potential, f"gp/{potential}",
+                                " level 1 2", two_levels=True,
+                                delete=f"group drop type {drop}\ndelete_atoms group drop compress no")
+    total = alone[1][0] + alone[2][0]
+    scale = np.abs(total).max()
+    print(f"\n{potential}: the two levels together differ from the sum of each alone by "
+          f"{np.abs(both - total).max() / scale:.2e} of the largest")
+    assert np.abs(both - total).max() <= 1e-12 * scale
+    df = force_difference(both_f, {**alone[1][1], **alone[2][1]})
+    print(f"forces: {df:.2e} of the largest")
+    assert df <= 1e-12
+
+
+@pytest.mark.parametrize("potential", EAM)
+def test_eam_levels_on_4_ranks(build, tmp_path, potential):
+    """Atoms and level-2 particles on 4 MPI ranks: the energy, stress and
+    forces of 1 rank to round-off (1e-12; the level-2 cutoff of 11 A is
+    more than half the box: the ghosts of many images)."""
+    one, one_f = perturbed(build, tmp_path / "one", potential, f"gp/{potential}", " level 1 2",
+                           two_levels=True, by_position=True)
+    four, four_f = perturbed(build, tmp_path / "four", potential, f"gp/{potential}",
+                             " level 1 2", two_levels=True, nprocs=4, by_position=True)
+    df = force_difference(four_f, one_f)
+    print(f"\n{potential}: 4 ranks - 1 rank {np.abs(four - one).max() / np.abs(one).max():.2e} "
+          f"(energy, stress), {df:.2e} (forces)")
+    assert np.abs(four - one).max() <= 1e-12 * np.abs(one).max()
+    assert df <= 1e-12
+
+
+@pytest.mark.parametrize("potential", EAM)
+def test_eam_level_one_with_kk(tmp_path, potential):
+    """gp/eam/.../kk at level 1 and at levels 1 and 2 against the CPU style
+    (the Kokkos kernels of the base style with the level tables; 1e-12)."""
+    build = mcatest.kokkos_build()
+    kk = ("-k", "on", "t", "2", "-sf", "kk")
+    for levels, two in ((" level 1 1", False), (" level 1 2", True)):
+        cpu, cpu_f = perturbed(build, tmp_path / f"cpu{levels[-1]}", potential,
+                               f"gp/{potential}", levels, two_levels=two)
+        dev, dev_f = perturbed(build, tmp_path / f"kk{levels[-1]}", potential,
+                               f"gp/{potential}", levels, two_levels=two, extra=kk)
+        df = force_difference(dev_f, cpu_f)
+        print(f"\n{potential},{levels}: kk - CPU {np.abs(dev - cpu).max() / np.abs(cpu).max():.2e}"
+              f" (energy, stress), {df:.2e} (forces)")
+        assert np.abs(dev - cpu).max() <= 1e-12 * np.abs(cpu).max()
+        assert df <= 1e-12
 
 
 BASE = """
@@ -165,6 +318,22 @@ mass            * 63.546
     # (LAMMPS checks the coefficients of every type before the style)
     ("pair_style gp/morse 6.5\npair_coeff 1 1 " + CU + " level 1\nrun 0",
      r"All pair coeffs are not set"),
+    ("pair_style gp/eam/alloy 5.0", r"Pair style gp/eam/alloy takes only the keywords ratio and "
+                                    r"scaling; got 1 arguments before them"),
+    ("pair_style gp/eam/alloy ratio 11", r"ratio must be an integer from 2 to 10, got 11"),
+    ("pair_style gp/eam/alloy\npair_coeff * * Cu_mishin1.eam.alloy Cu Cu",
+     r"\* \* file, the 2 element names, then the scale level of each type: "
+     r"'level n_1 \.\.\. n_2' \(n = 1 for atoms\); got 5 arguments"),
+    ("pair_style gp/eam/alloy\npair_coeff * * Cu_mishin1.eam.alloy Cu Cu level 1",
+     r"then the scale level of each type"),
+    ("pair_style gp/eam/fs\npair_coeff * * Fe_mm.eam.fs Fe Fe level 1 0",
+     r"the level of type 2 must be from 1 to 10, got 0"),
+    ("pair_style gp/eam/fs\npair_coeff * * Fe_mm.eam.fs Fe Cu level 1 2",
+     r"element Cu \(type 2\) is not in the potential file Fe_mm.eam.fs \(its elements: Fe\)"),
+    # 3^9 = 19683 times the 10000 rows of the file
+    ("pair_style gp/eam/fs ratio 3\npair_coeff * * Fe_mm.eam.fs Fe Fe level 1 10\nrun 0",
+     r"level 10 of ratio 3 needs tables of \d+ rows \(s = 19683 times the atomic 10000\); "
+     r"at most 50000000: use fewer levels or a smaller ratio"),
 ])
 def test_bad_input(build, tmp_path, commands, message):
     result = build.run(BASE + commands + "\n", tmp_path, check=False)

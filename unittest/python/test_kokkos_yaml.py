@@ -140,10 +140,12 @@ def test_pair_mca_kk_yaml(tmp_path, newton, name):
 
 
 @pytest.mark.parametrize("newton", ["on", "off"])
-@pytest.mark.parametrize("name", ["atomic-pair-gp_morse", "atomic-pair-gp_lj_cut"])
+@pytest.mark.parametrize("name", ["atomic-pair-gp_morse", "atomic-pair-gp_lj_cut",
+                                  "atomic-pair-gp_eam_alloy", "atomic-pair-gp_eam_fs"])
 def test_gp_pair_kk_yaml(tmp_path, newton, name):
     """The GP pair styles' kk variants (the kernels of LAMMPS's kk styles with
-    the parameters of the scale levels) against the CPU reference data."""
+    the parameters or the tables of the scale levels) against the CPU
+    reference data."""
     build = kokkos_build()
     config = yaml.safe_load((TESTS / f"{name}.yaml").read_text())
     eps = float(config["epsilon"])

@@ -41,6 +41,7 @@ mca_probe(MCA_HAVE_UTILS_LOGICAL      utils.h    "int logical\\(const char \\*fi
 mca_probe(MCA_HAVE_GET_FIX_BY_ID      modify.h   "get_fix_by_id\\(")
 mca_probe(MCA_HAVE_TYPE_LABELS       label_map.h "find_label\\(int, int\\)")
 mca_probe(MCA_HAVE_ERROR_ALL_IARG     error.h    "void all\\(const std::string &, int, int, const std::string &\\)")
+mca_probe(MCA_HAVE_EAM_VIRTUAL_BASE  MANYBODY/pair_eam_fs.h "class PairEAMFS : virtual public PairEAM")
 if(PKG_KOKKOS)
   mca_probe(MCA_HAVE_KK_FLOAT         KOKKOS/kokkos_type.h "KK_FLOAT")
   mca_probe(MCA_HAVE_KK_AVEC_VIRTUAL  KOKKOS/atom_vec_kokkos.h "class AtomVecKokkos : virtual public AtomVec")
@@ -62,6 +63,22 @@ if(NOT _mca_old STREQUAL _mca_config)
 endif()
 target_include_directories(lammps PRIVATE ${MCA_CONFIG_DIR})
 message(STATUS "MCA package API probes:${MCA_PROBE_SUMMARY}")
+
+# the EAM styles of the GP levels are variants of MANYBODY's eam/alloy and
+# eam/fs: without that package they are left out (as MC.cmake does for fix
+# sgcmc), before KOKKOS_MCA looks for the variants of the enabled styles
+if(NOT PKG_MANYBODY)
+  get_property(_mca_pair_headers GLOBAL PROPERTY PAIR)
+  get_target_property(_mca_lammps_sources lammps SOURCES)
+  foreach(_eam alloy fs)
+    list(REMOVE_ITEM _mca_pair_headers ${LAMMPS_SOURCE_DIR}/MCA/pair_gp_eam_${_eam}.h)
+    list(REMOVE_ITEM _mca_lammps_sources ${LAMMPS_SOURCE_DIR}/MCA/pair_gp_eam_${_eam}.cpp)
+  endforeach()
+  list(REMOVE_ITEM _mca_lammps_sources ${LAMMPS_SOURCE_DIR}/MCA/gp_eam_tables.cpp)
+  set_property(GLOBAL PROPERTY PAIR "${_mca_pair_headers}")
+  set_property(TARGET lammps PROPERTY SOURCES "${_mca_lammps_sources}")
+  message(STATUS "MCA: pair styles gp/eam/alloy and gp/eam/fs need the MANYBODY package (off)")
+endif()
 
 # the MCA sources need C++14 (LAMMPS 2021 defaults to C++11 without KOKKOS)
 target_compile_features(lammps PRIVATE cxx_std_14)
