@@ -85,6 +85,7 @@ template <class Base, class Format, class Tables>
 void PairGPEAMStyle<Base, Format, Tables>::init_style()
 {
   levels.check_all_set();
+  levels.exclude_other_levels();
   Base::init_style();
 }
 

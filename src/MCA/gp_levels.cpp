@@ -19,6 +19,7 @@
 #include "comm.h"
 #include "error.h"
 #include "memory.h"
+#include "neighbor.h"
 
 #include <cstring>
 
@@ -132,6 +133,28 @@ void GPLevels::check_all_set() const
                  "Pair style {}: atom type {} has no scale level (set it with 'level n' at the end "
                  "of one of its pair_coeff commands)",
                  style, t);
+}
+
+void GPLevels::exclude_other_levels() const
+{
+  const int ntypes = static_cast<int>(level.size()) - 1;
+  int added = 0;
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = i + 1; j <= ntypes; j++) {
+      if (level[i] == level[j]) continue;
+      bool listed = false;
+      for (int k = 0; k < neighbor->nex_type && !listed; k++)
+        listed = (neighbor->ex1_type[k] == i && neighbor->ex2_type[k] == j) ||
+            (neighbor->ex1_type[k] == j && neighbor->ex2_type[k] == i);
+      if (listed) continue;
+      neighbor->modify_params(fmt::format("exclude type {} {}", i, j));
+      added++;
+    }
+  if (added && comm->me == 0)
+    utils::logmesg(lmp,
+                   "{}: neighbor lists exclude {} pairs of atom types of different levels "
+                   "(neigh_modify exclude type)\n",
+                   style, added);
 }
 
 const char *GPLevels::scaling_name() const

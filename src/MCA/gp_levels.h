@@ -89,6 +89,11 @@ class GPLevels : protected Pointers {
   void allocate(int ntypes);
   // an error naming the first type without a level
   void check_all_set() const;
+  // neighbor lists leave out the pairs of types of different levels
+  // (neigh_modify exclude type, added once): their particles may
+  // coincide (every level-n site is a level-(n-1) site), and a pair at
+  // distance 0 within a zero cutoff would still be listed
+  void exclude_other_levels() const;
   bool same_level(int i, int j) const { return level[i] == level[j]; }
   double length(int type) const { return GPKernels::level_length(ratio, level[type]); }
   double energy_factor(int type) const

@@ -68,6 +68,7 @@ void PairGPStyle<Base, Potential>::coeff(int narg, char **arg)
 template <class Base, class Potential> void PairGPStyle<Base, Potential>::init_style()
 {
   coeffs.levels.check_all_set();
+  coeffs.levels.exclude_other_levels();
   for (int i = 1; i <= this->atom->ntypes; i++)
     for (int j = i; j <= this->atom->ntypes; j++) {
       if (!coeffs.given(i, j)) continue;

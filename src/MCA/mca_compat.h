@@ -163,6 +163,26 @@ namespace MCACompat {
 #endif
   }
 
+  // forward communication of per-atom data of a fix
+  inline void forward_comm(Comm *comm, Fix *fix)
+  {
+#ifdef MCA_HAVE_COMM_OVERLOADS
+    comm->forward_comm(fix);
+#else
+    comm->forward_comm_fix(fix);
+#endif
+  }
+
+  // reverse communication of per-atom data of a fix
+  inline void reverse_comm(Comm *comm, Fix *fix)
+  {
+#ifdef MCA_HAVE_COMM_OVERLOADS
+    comm->reverse_comm(fix);
+#else
+    comm->reverse_comm_fix(fix);
+#endif
+  }
+
   // minimum image convention for a separation vector
   inline void minimum_image(Domain *domain, double *delta)
   {

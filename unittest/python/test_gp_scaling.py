@@ -259,6 +259,47 @@ def test_eam_levels_do_not_interact(build, tmp_path, potential):
     assert df <= 1e-12
 
 
+COINCIDENT = """
+units           metal
+boundary        p p p
+lattice         bcc 2.855324
+region          box block 0 4 0 4 0 4
+create_box      2 box
+create_atoms    1 box
+lattice         bcc 5.710648
+create_atoms    2 box
+mass            * 55.845
+neighbor        1.0 {neighbor}
+{pair}
+thermo_style    custom step pe
+run             0
+print           "RESULT $(pe:%.17g)"
+"""
+COINCIDENT_PAIRS = {"eam/fs": "pair_style gp/eam/fs\npair_coeff * * Fe_mm.eam.fs Fe Fe level 1 2",
+                    "morse": "pair_style gp/morse 6.5\npair_coeff 1 1 0.4172 1.389 2.845 level 1\n"
+                             "pair_coeff 2 2 0.4172 1.389 2.845 level 2"}
+
+
+@pytest.mark.parametrize("potential", list(COINCIDENT_PAIRS))
+@pytest.mark.parametrize("neighbor", ["bin", "multi"])
+def test_coincident_levels(build, tmp_path, potential, neighbor):
+    """Every level-2 site is a level-1 site: pairs of different levels at
+    distance 0 are left out of the neighbor lists (a zero cutoff would
+    still list them, and the EAM kernel divides by r): the energy is that
+    of the two lattices alone (1e-12)."""
+    pair = COINCIDENT_PAIRS[potential]
+    script = COINCIDENT.format(neighbor=neighbor, pair=pair)
+    both = float(re.search(r"RESULT (\S+)", build.run(script, tmp_path / "both").stdout).group(1))
+    alone = 0.0
+    for drop in (1, 2):
+        text = script.replace("thermo_style", f"group drop type {drop}\ndelete_atoms group drop\n"
+                                              "thermo_style")
+        out = build.run(text, tmp_path / f"drop{drop}").stdout
+        alone += float(re.search(r"RESULT (\S+)", out).group(1))
+    print(f"\n{potential}, neighbor {neighbor}: {both:.12g} eV, alone {alone:.12g} eV")
+    assert both == pytest.approx(alone, rel=1e-12)
+
+
 @pytest.mark.parametrize("potential", EAM)
 def test_eam_levels_on_4_ranks(build, tmp_path, potential):
     """Atoms and level-2 particles on 4 MPI ranks: the energy, stress and
