@@ -52,6 +52,7 @@ The spec (a dict, or a JSON file) -- lengths in Angstrom:
   depth        the imaginary depth in units of r_c,n (default 1 for pair
                potentials, 2 for EAM; at least 1)
   neighbor     "bin" (default; KOKKOS takes only bin) or "multi"
+  coupling     "force" (default) or "energy": fix gp/link's coupling
 
 Shapes: {"block": [xlo, xhi, ylo, yhi, zlo, zhi]} (null = unbounded),
 {"cylinder": {"axis": "z", "center": [c1, c2], "radius": R}},
@@ -330,6 +331,9 @@ class Model:
         for n in self.image_levels:
             if n not in range(1, self.nlevels + 1):
                 raise BuildError(f"image_levels: level {n} is not one of 1..{self.nlevels}")
+        self.coupling = spec.get("coupling", "force")
+        if self.coupling not in ("force", "energy"):
+            raise BuildError(f"coupling '{self.coupling}': force or energy (fix gp/link)")
         self.neighbor = spec.get("neighbor", "bin")
         if self.neighbor not in ("bin", "multi"):
             raise BuildError(f"neighbor '{self.neighbor}': bin or multi")
@@ -628,11 +632,12 @@ class Model:
             c.append(f"group           level{n + 1} type {' '.join(ids)}")
         c.append(f"neighbor        1.0 {self.neighbor}")
         if any(len(i) for i in self.imaginary):
-            c.append("fix             gplink imaginary gp/link real")
+            c.append(f"fix             gplink imaginary gp/link real coupling {self.coupling}")
         if any(len(i) for i in self.images):
             # members of an image up to 2 r_c,n deep: reach a plane off the surface
             reach = self.image_reach()
-            c.append(f"fix             gpimages images gp/link real level same cutoff {reach:.6g}")
+            c.append(f"fix             gpimages images gp/link real level same cutoff {reach:.6g} "
+                     f"coupling {self.coupling}")
             c.append(f"comm_modify     cutoff {reach + 1.0:.6g}")
         c.append("compute         treal real temp")
         c.append("thermo_modify   temp treal")

@@ -251,7 +251,9 @@ def test_command_line(tmp_path):
                           "-o", str(tmp_path / "crack")], capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     assert (tmp_path / "crack.data").is_file() and (tmp_path / "in.crack").is_file()
-    assert "fix             gpimages images gp/link real level same" in (tmp_path / "in.crack").read_text()
+    fragment = (tmp_path / "in.crack").read_text()
+    assert "fix             gplink imaginary gp/link real coupling force" in fragment
+    assert "fix             gpimages images gp/link real level same" in fragment
     bad = dict(cracked([]), ratio=1)
     spec.write_text(json.dumps(bad))
     run = subprocess.run([sys.executable, str(mcatest.ROOT / "tools" / "gp_build.py"), str(spec)],
@@ -284,6 +286,7 @@ def test_command_line(tmp_path):
       "images": ["ylo", "yhi"]},
      r"periodic z length 45.68\S* must exceed twice the search distance \S+ of the surface"),
     ({"potential": {"style": "tersoff"}}, r"potential style 'tersoff'"),
+    ({"coupling": "both"}, r"coupling 'both': force or energy"),
 ])
 def test_bad_input(change, message):
     spec = dict(three_levels(), **change)
