@@ -76,3 +76,30 @@ def test_full_md_against_lefm(fields):
     print(f"\nfull MD against two-term LEFM, u_y on the Y axis (r >= 5 A): {deviation:.4f}")
     assert deviation < 0.25
     assert np.all(np.diff(md[0][far]) > 0)
+
+
+def test_size_effect(tmp_path):
+    """The trend of the GP digest sec. 4.8 (smaller plates too stiff): GP
+    plates of width 193.8 A with an edge crack to x = 41 A, half heights 6
+    and 12 level-2 periods (48.5, 96.9 A), pulled by grips to 1 %: u_y
+    above the tip grows with the plate (the example: 64.6 to 258 A)."""
+    import subprocess
+    import size
+    build = mcatest.build_named("current") or mcatest.builds()[0]
+    for name in ("in.tension", "make_tension.py"):
+        shutil.copy(EXAMPLE / name, tmp_path)
+    env = dict(build.environment(), MCA_ROOT=str(mcatest.ROOT))
+    u10 = []
+    for n in (6, 12):
+        made = subprocess.run([sys.executable, "make_tension.py", str(n), "--width", "24", "--tip",
+                               "41"], cwd=tmp_path, capture_output=True, text=True, env=env)
+        assert made.returncode == 0, made.stderr
+        W, H = (float(line.split()[1]) for line in made.stdout.split("\n")[:2])
+        build.run(open(tmp_path / "in.tension").read(), tmp_path,
+                  variables={"model": f"tgp.{n}", "W": W, "H": H}, name=f"in.run.{n}")
+        d = analysis.read(tmp_path / f"tension.tgp.{n}.dump")
+        size.TIP = 41.0
+        u10.append([size.opening(d, r) for r in (5, 10, 15)])
+    print(f"\nu_y at 5, 10, 15 A above the tip: H 48.5 A {np.round(u10[0], 4)}, "
+          f"96.9 A {np.round(u10[1], 4)}")
+    assert np.all(np.array(u10[1]) > 1.05 * np.array(u10[0]))
