@@ -14,4 +14,4 @@ for n in 12 18; do
     lmp -in in.ktest -var model $model -var L $L -log log.ktest.$model -screen none
   done
 done
-/usr/bin/python3 analysis.py md.12 gp16.12 gp32.12 gp48.12 md.18 gp32.18
+/usr/bin/python3 crack_fields.py md.12 gp16.12 gp32.12 gp48.12 md.18 gp32.18

@@ -27,7 +27,7 @@ import mcatest
 
 EXAMPLE = mcatest.ROOT / "examples" / "gp_crack"
 sys.path.insert(0, str(EXAMPLE))
-import analysis  # noqa: E402
+import crack_fields as analysis  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -84,7 +84,7 @@ def test_size_effect(tmp_path):
     and 12 level-2 periods (48.5, 96.9 A), pulled by grips to 1 %: u_y
     above the tip grows with the plate (the example: 64.6 to 258 A)."""
     import subprocess
-    import size
+    import crack_size as size
     build = mcatest.build_named("current") or mcatest.builds()[0]
     for name in ("in.tension", "make_tension.py"):
         shutil.copy(EXAMPLE / name, tmp_path)

@@ -9,7 +9,7 @@ single-edge-notched strip under the grips' mean stress (the SENT K and
 biaxiality of the GP digest sec. 4.7; load control, an infinitely long
 strip: the limit a large plate approaches).  Writes size.txt, size.png.
 
-  size.py tgp.8 tmd.8 tgp.16 ...   (logs log.tension.<model>, dumps
+  crack_size.py tgp.8 tmd.8 tgp.16 ...   (logs log.tension.<model>, dumps
                                     tension.<model>.dump)
 """
 import math
@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-import analysis
+import crack_fields as analysis
 
 TIP, W = 81.0, 387.651641   # make_tension.py's defaults
 R = [3, 5, 8, 10, 15, 20, 25]

@@ -10,7 +10,7 @@ circle cylinders of radius 3.615 A (the digest's).  u_y on the Y axis is
 the mean of +r and (minus) -r (mode I symmetry), u_x on the X axis is
 taken as it is.  Writes ktest.txt and ktest.png.
 
-  analysis.py md.96.9 gp32.96.9 ...   (the logs log.ktest.<model> and
+  crack_fields.py md.12 gp32.12 ...   (the logs log.ktest.<model> and
   the dumps ktest.<model>.dump of run.sh)
 """
 import math
