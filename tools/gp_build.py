@@ -409,6 +409,12 @@ class Model:
                 x[:, d] = self.box[d, 0] + np.mod(x[:, d] - self.box[d, 0] + TOLERANCE, L) - TOLERANCE
         return x
 
+    def level_tree(self, n):
+        """The k-d tree of level n's real particles (made once)."""
+        if n not in self.trees:
+            self.trees[n] = self.tree(self.real[n])
+        return self.trees[n]
+
     def tree(self, x):
         """A k-d tree with the box's periodicity (non-periodic axes get a span they cannot wrap)."""
         if cKDTree is None:
@@ -422,16 +428,23 @@ class Model:
             return np.where(self.periodic, np.mod(z, size), z)
         return cKDTree(into(x), boxsize=size), into
 
+    def beyond(self, x, face):
+        """Points beyond a face of a non-periodic axis (a point on an upper face is beyond it)."""
+        d = AXES.index(face[0])
+        if face.endswith("lo"):
+            return x[:, d] < self.box[d, 0] - TOLERANCE
+        return x[:, d] >= self.box[d, 1] - TOLERANCE
+
+    def open_faces(self):
+        return [AXES[d] + side for d in range(3) if not self.periodic[d] for side in ("lo", "hi")]
+
     def level_of(self, x):
         """The level (0-based) whose domain holds each point (-1: outside the box)."""
         level = np.full(len(x), -1)
         for n in reversed(range(self.nlevels)):
             level[self.regions[n].contains(x)] = n
-        outside = np.zeros(len(x), dtype=bool)
-        for d in range(3):
-            if not self.periodic[d]:
-                outside |= (x[:, d] < self.box[d, 0] - TOLERANCE) | (x[:, d] >= self.box[d, 1] - TOLERANCE)
-        level[outside] = -1
+        for face in self.open_faces():
+            level[self.beyond(x, face)] = -1
         return level
 
     def in_cut(self, x):
@@ -444,6 +457,7 @@ class Model:
 
     def make_particles(self):
         self.real, self.imaginary, self.images = [], [], []
+        self.trees = {}
         lo_box, hi_box = self.box[:, 0], self.box[:, 1]
         for n in range(self.nlevels):
             # level n's sites in its region and the imaginary depth around it
@@ -460,10 +474,11 @@ class Model:
             self.real.append(real)
             self.check_nesting(n)
             # imaginary: in another level's domain, within the depth of a real one
-            candidates = x[(level != n) & (level >= 0)]
-            near = self.within(real, candidates, self.depth[n])
+            elsewhere = (level != n) & (level >= 0)
+            candidates = x[elsewhere]
+            near = self.within(n, candidates, self.depth[n])
             imaginary = candidates[near]
-            other = level[(level != n) & (level >= 0)][near]
+            other = level[elsewhere][near]
             if np.any(np.abs(other - n) != 1):
                 bad = sorted(set((other[np.abs(other - n) != 1] + 1).tolist()))
                 raise BuildError(
@@ -472,7 +487,7 @@ class Model:
                     f"between them is thinner than the imaginary depth {self.depth[n]:.4g} A of "
                     f"level {n + 1}")
             self.imaginary.append(imaginary)
-            self.images.append(self.make_images(n, x, real))
+            self.images.append(self.make_images(n, x))
         if any(len(i) for i in self.images):
             reach = self.image_reach()
             for d in range(3):
@@ -483,39 +498,28 @@ class Model:
                         f"search distance {reach:.6g} of the surface images' links")
         self.check_members()
 
-    def within(self, real, points, distance):
-        if len(real) == 0 or len(points) == 0:
+    def within(self, n, points, distance):
+        """Which points lie within distance of a real level-n particle."""
+        if len(self.real[n]) == 0 or len(points) == 0:
             return np.zeros(len(points), dtype=bool)
-        tree, into = self.tree(real)
+        tree, into = self.level_tree(n)
         d, _ = tree.query(into(points), k=1, distance_upper_bound=distance + TOLERANCE)
         return np.isfinite(d)
 
-    def make_images(self, n, x, real):
-        """Level-n sites beyond the faces with images, within the depth of a real one."""
+    def make_images(self, n, x):
+        """Level-n sites beyond the faces with images (and no other face),
+        within the depth of a real one."""
         if n + 1 not in self.image_levels or not self.faces:
             return np.zeros((0, 3))
         beyond = np.zeros(len(x), dtype=bool)
-        for f in self.faces:
-            d = AXES.index(f[0])
-            if f.endswith("lo"):
-                beyond |= x[:, d] < self.box[d, 0] - TOLERANCE
+        elsewhere = np.zeros(len(x), dtype=bool)
+        for face in self.open_faces():
+            if face in self.faces:
+                beyond |= self.beyond(x, face)
             else:
-                beyond |= x[:, d] >= self.box[d, 1] - TOLERANCE
-        # only beyond the listed faces and nowhere else outside the box
-        inside_others = np.ones(len(x), dtype=bool)
-        for d in range(3):
-            if self.periodic[d]:
-                continue
-            for side in ("lo", "hi"):
-                face = AXES[d] + side
-                if face in self.faces:
-                    continue
-                if side == "lo":
-                    inside_others &= x[:, d] >= self.box[d, 0] - TOLERANCE
-                else:
-                    inside_others &= x[:, d] < self.box[d, 1] - TOLERANCE
-        candidates = x[beyond & inside_others]
-        return candidates[self.within(real, candidates, self.depth[n])]
+                elsewhere |= self.beyond(x, face)
+        candidates = x[beyond & ~elsewhere]
+        return candidates[self.within(n, candidates, self.depth[n])]
 
     def check_nesting(self, n):
         """Level n's region inside the next one's (else levels overlap)."""
@@ -548,7 +552,7 @@ class Model:
                 count = np.zeros(len(points), dtype=int)
                 for m in levels:
                     if 0 <= m < self.nlevels and len(self.real[m]):
-                        tree, into = self.tree(self.real[m])
+                        tree, into = self.level_tree(m)
                         count += np.array([len(c) for c in tree.query_ball_point(into(points), cutoff)])
                 if np.any(count < 4):
                     raise BuildError(
@@ -556,6 +560,10 @@ class Model:
                         f"particles to link to within {cutoff:.4g} A")
 
     # -- output --------------------------------------------------------------
+
+    def type_mass(self, n):
+        """The mass of a level-n particle, l_n m0."""
+        return self.mass * self.scale[n] ** 3
 
     def types(self):
         """(kind, level) of each atom type, 1-based order: real levels, imaginary, images."""
@@ -622,7 +630,7 @@ class Model:
                     if j >= i and n == m:
                         c.append(f"pair_coeff      {i} {j} {coeffs} level {n + 1}")
             for i, (_, n) in enumerate(types, start=1):
-                c.append(f"mass            {i} {self.mass * self.scale[n] ** 3:.10g}")
+                c.append(f"mass            {i} {self.type_mass(n):.10g}")
         for kind in ("real", "imaginary", "image"):
             ids = [str(i) for i, (k, _) in enumerate(types, start=1) if k == kind]
             if ids:
@@ -659,7 +667,7 @@ class Model:
                 f.write(f"{lo[d]:.16g} {hi[d]:.16g} {AXES[d]}lo {AXES[d]}hi\n")
             f.write("\nMasses\n\n")
             for t, (_, n) in enumerate(self.types(), start=1):
-                f.write(f"{t} {self.mass * self.scale[n] ** 3:.10g}\n")
+                f.write(f"{t} {self.type_mass(n):.10g}\n")
             f.write("\nAtoms # atomic\n\n")
             for i in range(len(x)):
                 f.write(f"{i + 1} {types[i]} {x[i, 0]:.16g} {x[i, 1]:.16g} {x[i, 2]:.16g}\n")
@@ -677,7 +685,7 @@ class Model:
                     f"{lo[2]:.16g} {hi[2]:.16g} units box")
         lmp.command(f"create_box {len(self.types())} gpbox")
         for t, (_, n) in enumerate(self.types(), start=1):
-            lmp.command(f"mass {t} {self.mass * self.scale[n] ** 3:.10g}")
+            lmp.command(f"mass {t} {self.type_mass(n):.10g}")
         n = len(x)
         lmp.create_atoms(n, list(range(1, n + 1)), types.tolist(), x.ravel().tolist())
         lmp.commands_list(commands[5:])

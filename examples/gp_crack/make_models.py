@@ -26,25 +26,30 @@ import gp_build  # noqa: E402
 
 
 A0 = 2.855324
+PERIOD = 2 * math.sqrt(2) * A0          # level 2 along X and Y
 
 
-def spec(L, H=None):
-    s = {"lattice": "bcc", "a0": A0, "element": "Fe",
-         "orient": [[1, 1, 0], [-1, 1, 0], [0, 0, 1]],
-         "potential": {"style": "eam/fs", "file": "Fe_mm.eam.fs"}, "ratio": 2,
-         "box": [-L - 1e-4, L - 1e-4, -L - 1e-4, L - 1e-4, 0, 8 * A0], "periodic": "z",
-         "cuts": [{"crack": {"tip": 1.0, "y": 0, "height": 4.5}}]}
-    s["levels"] = [None] if H is None else [{"block": [None, H, -H, H, None, None]}, None]
-    return s
+def cracked_plate(xlo, xhi, ylo, yhi, tip, atoms):
+    """The Fe plate of this example's models, [xlo, xhi) x [ylo, yhi) x 8 a0,
+    an edge crack from xlo to tip; all atoms (atoms None) or atoms in x < X,
+    |y| < Y (atoms = (X, Y)) and level 2 elsewhere.  The box is shifted down by 1e-4 A: the
+    planes at the lower faces are in, those at the upper ones out (as the
+    builder's half-open regions), the same for all levels."""
+    return {"lattice": "bcc", "a0": A0, "element": "Fe",
+            "orient": [[1, 1, 0], [-1, 1, 0], [0, 0, 1]],
+            "potential": {"style": "eam/fs", "file": "Fe_mm.eam.fs"}, "ratio": 2,
+            "box": [xlo - 1e-4, xhi - 1e-4, ylo - 1e-4, yhi - 1e-4, 0, 8 * A0], "periodic": "z",
+            "cuts": [{"crack": {"tip": tip, "y": 0, "height": 4.5}}],
+            "levels": [None] if atoms is None else
+            [{"block": [None, atoms[0], -atoms[1], atoms[1], None, None]}, None]}
 
 
 def main(n, heights):
-    # the box is shifted down by 1e-4 A: the planes at -L are in, those at
-    # +L out (as the builder's half-open regions), the same for all levels
-    L = n * 2 * math.sqrt(2) * A0
+    L = n * PERIOD
     print(f"L {L:.6f}")
-    for name, s in [(f"md.{n}", spec(L))] + [(f"gp{h:g}.{n}", spec(L, h)) for h in heights]:
-        model = gp_build.build(s)
+    models = [(f"md.{n}", None)] + [(f"gp{h:g}.{n}", h) for h in heights]
+    for name, H in models:
+        model = gp_build.build(cracked_plate(-L, L, -L, L, 1.0, None if H is None else (H, H)))
         model.write(name)
         print(f"{name}: " + "; ".join(line.strip() for line in model.summary()[1:]))
 

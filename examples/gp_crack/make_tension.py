@@ -13,32 +13,14 @@ plane strain): a plate x in [0, W), y in [-H, H), W = 48 level-2 periods
   make_tension.py n [md] [--width periods] [--tip x]   (prints W and H;
                           the tests use a narrower plate)
 """
-import math
-import os
-import pathlib
-import sys
-
-root = pathlib.Path(os.environ.get("MCA_ROOT", pathlib.Path(__file__).resolve().parents[2]))
-sys.path.insert(0, str(root / "tools"))
-import gp_build  # noqa: E402
-
-A0 = 2.855324
-PERIOD = 2 * math.sqrt(2) * A0          # level 2 along X and Y
-def spec(W, H, md, tip):
-    return {"lattice": "bcc", "a0": A0, "element": "Fe",
-            "orient": [[1, 1, 0], [-1, 1, 0], [0, 0, 1]],
-            "potential": {"style": "eam/fs", "file": "Fe_mm.eam.fs"}, "ratio": 2,
-            # shifted down by 1e-4 A: the planes at the lower faces are in
-            "box": [-1e-4, W - 1e-4, -H - 1e-4, H - 1e-4, 0, 8 * A0], "periodic": "z",
-            "cuts": [{"crack": {"tip": tip, "y": 0, "height": 4.5}}],
-            "levels": [None] if md else [{"block": [None, tip + 32, -32, 32, None, None]}, None]}
+from make_models import PERIOD, cracked_plate, gp_build  # (make_models finds the builder)
 
 
 def main(n, md, width, tip):
     W, H = width * PERIOD, n * PERIOD
     print(f"W {W:.6f}\nH {H:.6f}")
     name = f"{'tmd' if md else 'tgp'}.{n}"
-    model = gp_build.build(spec(W, H, md, tip))
+    model = gp_build.build(cracked_plate(0.0, W, -H, H, tip, None if md else (tip + 32, 32)))
     model.write(name)
     print(f"{name}: " + "; ".join(line.strip() for line in model.summary()[1:]))
 

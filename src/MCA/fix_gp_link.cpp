@@ -227,7 +227,7 @@ void FixGPLink::return_forces(int vflag)
     const int n = nmembers[i];
     if (n == 0) continue;
     for (int k = 0; k < n; k++) {
-      const int j = domain->closest_image(i, atom->map(members[i][k]));
+      const int j = member_index(i, k);
       double fj[3];
       for (int d = 0; d < 3; d++) {
         fj[d] = weights[i][k] * f[i][d];
@@ -253,26 +253,34 @@ void FixGPLink::follow(bool ghosts_current)
 }
 
 /* ----------------------------------------------------------------------
+   member k of linked particle i: its image closest to i
+------------------------------------------------------------------------- */
+
+int FixGPLink::member_index(int i, int k)
+{
+  const int j = atom->map(members[i][k]);
+  if (j < 0)
+    error->one(FLERR,
+               "Fix gp/link: member {} of imaginary particle {} is not on this processor or "
+               "its ghosts (use comm_modify cutoff to reach it)",
+               members[i][k], atom->tag[i]);
+  return domain->closest_image(i, j);
+}
+
+/* ----------------------------------------------------------------------
    x_I = x_I + sum_j w_j (x_j - x_I) over the members' closest images
 ------------------------------------------------------------------------- */
 
 void FixGPLink::update()
 {
   double **x = atom->x;
-  const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
   double offset[MAX_MEMBERS][3];
   for (int i = 0; i < nlocal; i++) {
     const int n = nmembers[i];
     if (n == 0) continue;
     for (int k = 0; k < n; k++) {
-      int j = atom->map(members[i][k]);
-      if (j < 0)
-        error->one(FLERR,
-                   "Fix gp/link: member {} of imaginary particle {} is not on this processor or "
-                   "its ghosts (use comm_modify cutoff to reach it)",
-                   members[i][k], tag[i]);
-      j = domain->closest_image(i, j);
+      const int j = member_index(i, k);
       for (int d = 0; d < 3; d++) offset[k][d] = x[j][d] - x[i][d];
     }
     double xnew[3];

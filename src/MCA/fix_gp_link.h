@@ -90,6 +90,7 @@ class FixGPLink : public Fix {
 
   void link();
   void update();
+  int member_index(int i, int k);
   void follow(bool ghosts_current);
   void zero_motion();
   void return_forces(int vflag);

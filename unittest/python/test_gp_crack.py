@@ -18,6 +18,7 @@ atoms within 16 and 32 A of the crack, level-2 particles elsewhere.
 """
 
 import shutil
+import subprocess
 import sys
 
 import numpy as np
@@ -37,7 +38,6 @@ def fields(tmp_path_factory):
     for name in ("in.ktest", "make_models.py"):
         shutil.copy(EXAMPLE / name, directory)
     env = build.environment()
-    import subprocess
     made = subprocess.run([sys.executable, "make_models.py", "8", "16", "32"], cwd=directory,
                           capture_output=True, text=True, env=dict(env, MCA_ROOT=str(mcatest.ROOT)))
     assert made.returncode == 0, made.stderr
@@ -83,10 +83,9 @@ def test_size_effect(tmp_path):
     plates of width 193.8 A with an edge crack to x = 41 A, half heights 6
     and 12 level-2 periods (48.5, 96.9 A), pulled by grips to 1 %: u_y
     above the tip grows with the plate (the example: 64.6 to 258 A)."""
-    import subprocess
     import crack_size as size
     build = mcatest.build_named("current") or mcatest.builds()[0]
-    for name in ("in.tension", "make_tension.py"):
+    for name in ("in.tension", "make_tension.py", "make_models.py"):
         shutil.copy(EXAMPLE / name, tmp_path)
     env = dict(build.environment(), MCA_ROOT=str(mcatest.ROOT))
     u10 = []
