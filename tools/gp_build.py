@@ -497,6 +497,31 @@ class Model:
                         f"box: the periodic {AXES[d]} length {length:.6g} must exceed twice the "
                         f"search distance {reach:.6g} of the surface images' links")
         self.check_members()
+        self.check_cuts()
+
+    def check_cuts(self):
+        """A warning for each coarse level with real particles within its
+        imaginary depth of a cut: a cut removes the imaginary sites inside
+        it, so such particles see the cut as a coarse free surface (the
+        atoms' surface is right, a coarse one is not)."""
+        self.warnings = []
+        if not self.cuts:
+            return
+        lo = np.array([max(self.box[d, 0], min(c.bounds()[d, 0] for c in self.cuts)) for d in range(3)])
+        hi = np.array([min(self.box[d, 1], max(c.bounds()[d, 1] for c in self.cuts)) for d in range(3)])
+        removed = self.sites(0, lo, hi)
+        removed = removed[self.in_cut(removed)]       # the atoms the cuts remove
+        for n in range(1, self.nlevels):
+            if len(removed) == 0 or len(self.real[n]) == 0:
+                continue
+            tree, into = self.tree(removed)
+            d, _ = tree.query(into(self.real[n]), k=1, distance_upper_bound=self.depth[n])
+            near = int(np.sum(np.isfinite(d)))
+            if near:
+                self.warnings.append(
+                    f"WARNING: {near} real level-{n + 1} particles lie within the imaginary depth "
+                    f"{self.depth[n]:.4g} A of a cut: they see it as a coarse surface; put the cut's "
+                    f"faces in level 1 with a margin of {self.depth[n]:.4g} A")
 
     def within(self, n, points, distance):
         """Which points lie within distance of a real level-n particle."""
@@ -605,6 +630,7 @@ class Model:
                      f"({atoms / particles:.3g} per real particle, {atoms / total:.3g} per particle "
                      "with the imaginary ones)")
         lines += ["  snapped: " + s for s in self.snapped]
+        lines += ["  " + w for w in self.warnings]
         return lines
 
     def commands(self, data=None):
