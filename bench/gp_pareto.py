@@ -16,7 +16,10 @@ models with 2, 3 or 4 levels, ratio k = 2 or 3:
                         out to H + W (n - 1) A (default W 48.45: the
                         level-(n+1) imaginary shell, 2 r_c of level
                         n+1, fits in it),
-                        level m beyond; the builder snaps H and S onto
+                        level m beyond; q: fix gp/link fit quadratic
+                        (the interface particles exact for curved
+                        fields; without q the linear fit, exact for
+                        uniform strains only); the builder snaps H and S onto
                         the level-2 planes (k 2: multiples of 8.08 A,
                         k 3: 12.11 A).  S must keep level 2 more than its
                         imaginary depth (2 r_c of level 2: 21.2 A for k 2,
@@ -38,7 +41,8 @@ relaxations (LAMMPS's loop times x ranks), FIRE iterations, the error of
 u_y on the Y axis above the tip (relative, r >= 5 A where the model has
 atoms), of u_x on the X axis ahead of it and u_r on the R = 15 A circle
 (as fractions of the largest MD value on the path), all against full MD
-of the same block; u_y also against the two-term LEFM field.  The fields
+of the same block, and the largest of the three (the model's
+displacement error); u_y also against the two-term LEFM field.  The fields
 are averaged as the thesis did (examples/gp_crack/crack_fields.py).
 
   bench/gp_pareto.py [--units 6] [--models md,k2m2h32s24,...] [--np 1]
@@ -48,7 +52,8 @@ are averaged as the thesis did (examples/gp_crack/crack_fields.py).
 directory (same units) instead of running it again.
 
 L = units x 48.45 A.  Writes OUT.md (the table), OUT.csv and OUT.png
-(core-seconds per nm of front against the u_y error), the LAMMPS logs to
+(core-seconds per nm of front against the largest of the three errors;
+open marks: fit quadratic), the LAMMPS logs to
 OUT/ and prints the table.  Needs lmp with the MCA and MANYBODY packages
 on PATH and LAMMPS_POTENTIALS set (eval "$(tools/mca env current)").
 """
@@ -89,15 +94,17 @@ def shell_width(name):
 
 
 def parse_all(name):
+    """(k, m, H, S, W, fit) of a model name."""
     if re.fullmatch(r"md(\d*)", name):
-        return 1, 1, None, None, None
-    m = re.fullmatch(r"k(\d)m(\d)h(\d+)(?:s(\d+))?(?:w(\d+))?", name)
+        return 1, 1, None, None, None, "linear"
+    m = re.fullmatch(r"k(\d)m(\d)h(\d+)(?:s(\d+))?(?:w(\d+))?(q?)", name)
     if not m:
-        raise SystemExit(f"--models: '{name}' is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>]")
+        raise SystemExit(f"--models: '{name}' is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q]")
     k, levels, H = int(m[1]), int(m[2]), float(m[3])
     if k not in (2, 3) or not 2 <= levels <= 4:
         raise SystemExit(f"--models: '{name}': k 2 or 3, 2 to 4 levels")
-    return k, levels, H, (float(m[4]) if m[4] else None), (float(m[5]) if m[5] else None)
+    return (k, levels, H, (float(m[4]) if m[4] else None), (float(m[5]) if m[5] else None),
+            "quadratic" if m[6] else "linear")
 
 
 def model_thickness(name):
@@ -144,7 +151,8 @@ def spec(name, L):
             "orient": [[1, 1, 0], [-1, 1, 0], [0, 0, 1]],
             "potential": {"style": "eam/fs", "file": "Fe_mm.eam.fs"}, "ratio": max(k, 2),
             "box": [-L - 1e-4, L - 1e-4, -L - 1e-4, L - 1e-4, 0, nz * A0], "periodic": "z",
-            "cuts": [{"crack": {"tip": 1.0, "y": 0, "height": 4.5}}], "levels": regions}
+            "cuts": [{"crack": {"tip": 1.0, "y": 0, "height": 4.5}}], "levels": regions,
+            "fit": parse_all(name)[5]}
 
 
 def run_model(name, L, frame, args, work):
@@ -191,6 +199,11 @@ def errors(rows, work):
         r["uy10"] = float(uy[crack_fields.R_AXIS.index(10)])
 
 
+def largest(row):
+    """The displacement error of a model: the largest of its three."""
+    return max(row["err_uy"], row["err_ux"], row["err_ur"])
+
+
 def table(rows, L, frame, ranks, ftol):
     md = next(r for r in rows if r["model"] == "md")
     per_nm_md = md["core_s"] / md["front_nm"]
@@ -200,8 +213,8 @@ def table(rows, L, frame, ranks, ftol):
              "",
              "| model | k | levels | thickness (a0) | particles (real + imaginary) | per nm of front "
              "| atoms per particle | FIRE iterations | core-s | core-s per nm | speed-up per nm "
-             "| u_y error | u_x error | u_r(15 A) error | u_y vs LEFM | u_y(10 A) (A) |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "| u_y error | u_x error | u_r(15 A) error | largest error | u_y vs LEFM | u_y(10 A) (A) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         per_nm = r["core_s"] / r["front_nm"]
         vs = "" if r is md else f"{r['err_uy'] * 100:.2f} %"
@@ -211,6 +224,7 @@ def table(rows, L, frame, ranks, ftol):
             f"| {r['core_s']:.1f} | {per_nm:.1f} | {per_nm_md / per_nm:.2f} "
             f"| {vs} | {'' if r is md else format(r['err_ux'] * 100, '.2f') + ' %'} "
             f"| {'' if r is md else format(r['err_ur'] * 100, '.2f') + ' %'} "
+            f"| {'' if r is md else format(largest(r) * 100, '.2f') + ' %'} "
             f"| {r['err_uy_lefm'] * 100:.1f} % | {r['uy10']:.4f} |")
     if any(r["warnings"] for r in rows):
         lines += ["", "(*) level 2 within its imaginary depth of the crack faces (the builder's "
@@ -231,16 +245,18 @@ def plot(rows, path, L):
     for r in rows:
         if r is md:
             continue
-        ax.plot(r["err_uy"] * 100, r["core_s"] / r["front_nm"], marks.get((r["k"], r["levels"]), "x"),
-                label=r["model"])
-        ax.annotate(r["model"], (r["err_uy"] * 100, r["core_s"] / r["front_nm"]), fontsize=7,
+        quadratic = parse_all(r["model"])[5] == "quadratic"
+        ax.plot(largest(r) * 100, r["core_s"] / r["front_nm"], marks.get((r["k"], r["levels"]), "x"),
+                label=r["model"], mfc="none" if quadratic else None)
+        ax.annotate(r["model"], (largest(r) * 100, r["core_s"] / r["front_nm"]), fontsize=7,
                     xytext=(3, 3), textcoords="offset points")
     per_nm_md = md["core_s"] / md["front_nm"]
     ax.axhline(per_nm_md, color="k", lw=1, label="full MD")
     ax.axhline(per_nm_md / 10, color="k", ls=":", lw=1, label="full MD / 10")
     ax.axvline(5, color="r", ls=":", lw=1, label="5 % error")
     ax.set_yscale("log")
-    ax.set_xlabel("u_y error against full MD, r >= 5 A (%)")
+    ax.set_xscale("log")
+    ax.set_xlabel("largest displacement error against full MD (u_y, u_x, u_r; r >= 5 A) (%)")
     ax.set_ylabel("core-seconds per nm of crack front")
     ax.set_title(f"Fe crack K-test, L = {L:.1f} A: cost against error")
     ax.legend(fontsize=7)

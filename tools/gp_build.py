@@ -53,6 +53,9 @@ The spec (a dict, or a JSON file) -- lengths in Angstrom:
                potentials, 2 for EAM; at least 1)
   neighbor     "bin" (default; KOKKOS takes only bin) or "multi"
   coupling     "force" (default) or "energy": fix gp/link's coupling
+  fit          "linear" (default) or "quadratic": fix gp/link's fit of
+               the interface particles (quadratic: exact for curved
+               fields too, for statics near a crack tip)
 
 Shapes: {"block": [xlo, xhi, ylo, yhi, zlo, zhi]} (null = unbounded),
 {"cylinder": {"axis": "z", "center": [c1, c2], "radius": R}},
@@ -334,6 +337,9 @@ class Model:
         self.coupling = spec.get("coupling", "force")
         if self.coupling not in ("force", "energy"):
             raise BuildError(f"coupling '{self.coupling}': force or energy (fix gp/link)")
+        self.fit = spec.get("fit", "linear")
+        if self.fit not in ("linear", "quadratic"):
+            raise BuildError(f"fit '{self.fit}': linear or quadratic (fix gp/link)")
         self.neighbor = spec.get("neighbor", "bin")
         if self.neighbor not in ("bin", "multi"):
             raise BuildError(f"neighbor '{self.neighbor}': bin or multi")
@@ -666,7 +672,8 @@ class Model:
             c.append(f"group           level{n + 1} type {' '.join(ids)}")
         c.append(f"neighbor        1.0 {self.neighbor}")
         if any(len(i) for i in self.imaginary):
-            c.append(f"fix             gplink imaginary gp/link real coupling {self.coupling}")
+            fit = "" if self.fit == "linear" else f" fit {self.fit}"
+            c.append(f"fix             gplink imaginary gp/link real coupling {self.coupling}{fit}")
         if any(len(i) for i in self.images):
             # members of an image up to 2 r_c,n deep: reach a plane off the surface
             reach = self.image_reach()

@@ -12,6 +12,7 @@ for potential in eam morse; do
       -log log.patch.$potential.$coupling -screen none
   done
 done
+lmp -in in.patch -var potential eam -var fit quadratic -log log.patch.eam.force.quadratic -screen none
 for coupling in force energy; do
   lmp -in in.nve -var coupling $coupling -log log.nve.$coupling -screen none
 done

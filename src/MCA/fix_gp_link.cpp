@@ -35,16 +35,20 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+static_assert(FixGPLink::MAX_MEMBERS == GPKernels::MAX_LINK_MEMBERS,
+              "the link kernels' work arrays hold MAX_MEMBERS members");
+
 static constexpr int MIN_MEMBERS = 4;
 
 /* ----------------------------------------------------------------------
    fix ID group gp/link real-group [members N] [cutoff d] [level adjacent|same]
+       [coupling force|energy] [fit linear|quadratic]
 ------------------------------------------------------------------------- */
 
 FixGPLink::FixGPLink(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), max_members(MAX_MEMBERS), cutoff(0.0), same_level(0), energy_coupling(0),
-    linked(0), level(nullptr), nmax_arrays(0), nmembers(nullptr), members(nullptr),
-    weights(nullptr), returned(nullptr), nmax_returned(0)
+    quadratic_fit(0), linked(0), level(nullptr), nmax_arrays(0), nmembers(nullptr),
+    members(nullptr), weights(nullptr), returned(nullptr), nmax_returned(0)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix gp/link", error);
   real_group = group->find(arg[3]);
@@ -87,16 +91,24 @@ FixGPLink::FixGPLink(LAMMPS *lmp, int narg, char **arg) :
         energy_coupling = 1;
       else
         error->all(FLERR, "Fix gp/link: coupling must be force or energy, got {}", value);
+    } else if (key == "fit") {
+      const std::string value = arg[iarg + 1];
+      if (value == "linear")
+        quadratic_fit = 0;
+      else if (value == "quadratic")
+        quadratic_fit = 1;
+      else
+        error->all(FLERR, "Fix gp/link: fit must be linear or quadratic, got {}", value);
     } else {
       error->all(FLERR,
-                 "Fix gp/link: unknown keyword {} (allowed: members, cutoff, level, coupling)",
+                 "Fix gp/link: unknown keyword {} (allowed: members, cutoff, level, coupling, fit)",
                  key);
     }
     iarg += 2;
   }
 
   vector_flag = 1;
-  size_vector = 3;
+  size_vector = 4;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -111,7 +123,7 @@ FixGPLink::FixGPLink(LAMMPS *lmp, int narg, char **arg) :
     virial_global_flag = 1;
     thermo_virial = 1;
   }
-  stats[0] = stats[1] = stats[2] = 0.0;
+  stats[0] = stats[1] = stats[2] = stats[3] = 0.0;
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -359,7 +371,7 @@ void FixGPLink::link()
   }
 
   int nlinked = 0, nmember_sum = 0;
-  double longest = 0.0;
+  double longest = 0.0, largest_sum = 0.0;
   std::vector<std::pair<double, int>> near;
   double d[MAX_MEMBERS][3];
   for (int i = 0; i < nlocal; i++) {
@@ -405,11 +417,20 @@ void FixGPLink::link()
       for (int dd = 0; dd < 3; dd++) d[k][dd] = x[j][dd] - x[i][dd];
     };
     for (int k = 0; k < n; k++) take(k, k);
-    double quality = GPKernels::link_weights(n, d, weights[i]);
+    // fit quadratic: where the members are coarser than the particle (the
+    // interpolation spans their spacing); members of a finer level follow
+    // the field at their own, smaller spacing, and quadratic weights would
+    // pass their atomic-scale motion on amplified (doc: measured)
+    const bool quadratic = quadratic_fit && level[type[near[0].second]] > li;
+    auto fit = [&]() {
+      return quadratic ? GPKernels::link_weights_quadratic(n, d, weights[i])
+                       : GPKernels::link_weights(n, d, weights[i]);
+    };
+    double quality = fit();
     std::size_t farthest = n - 1;
     for (std::size_t c = n; quality == 0.0 && c < near.size(); c++) {
       take(n - 1, static_cast<int>(c));
-      quality = GPKernels::link_weights(n, d, weights[i]);
+      quality = fit();
       farthest = c;
     }
     if (quality == 0.0)
@@ -419,6 +440,9 @@ void FixGPLink::link()
                  "larger cutoff",
                  same_level ? "same" : "adjacent", cut, tag[i]);
     longest = std::max(longest, near[farthest].first);
+    double amplification = 0.0;
+    for (int k = 0; k < n; k++) amplification += fabs(weights[i][k]);
+    largest_sum = std::max(largest_sum, amplification);
     nmembers[i] = n;
     nlinked++;
     nmember_sum += n;
@@ -427,6 +451,7 @@ void FixGPLink::link()
   double local[2] = {(double) nlinked, (double) nmember_sum}, all[2];
   MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_SUM, world);
   MPI_Allreduce(&longest, &stats[2], 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&largest_sum, &stats[3], 1, MPI_DOUBLE, MPI_MAX, world);
   stats[0] = all[0];
   stats[1] = (all[0] > 0.0) ? all[1] / all[0] : 0.0;
   linked = 1;
@@ -434,13 +459,14 @@ void FixGPLink::link()
     utils::logmesg(
         lmp,
         "fix gp/link: {:.0f} imaginary particles linked to {:.2f} real particles each on "
-        "average, the farthest at {:.6g}\n",
-        stats[0], stats[1], stats[2]);
+        "average, the farthest at {:.6g}, weights summing to at most {:.4g} in magnitude\n",
+        stats[0], stats[1], stats[2], stats[3]);
 }
 
 /* ----------------------------------------------------------------------
-   linked particles, members per particle, largest member distance (at
-   linking; 0 after a restart)
+   linked particles, members per particle, largest member distance, largest
+   sum of |weights| (the members' noise it passes on; 1 for a plain mean)
+   at linking (0 after a restart)
 ------------------------------------------------------------------------- */
 
 double FixGPLink::compute_vector(int n)

@@ -38,7 +38,7 @@ namespace LAMMPS_NS {
 
 class FixGPLink : public Fix {
  public:
-  static constexpr int MAX_MEMBERS = 12;
+  static constexpr int MAX_MEMBERS = 12;    // (GPKernels::MAX_LINK_MEMBERS)
 
   FixGPLink(class LAMMPS *, int, char **);
   ~FixGPLink() override;
@@ -77,9 +77,11 @@ class FixGPLink : public Fix {
   double cutoff;          // search distance for members (0: the pair cutoff)
   int same_level;         // 1: members of the same level (surface images)
   int energy_coupling;    // 1: the forces on the linked particles go to their members
+  int quadratic_fit;      // 1: weights exact for quadratic motions too (fit quadratic)
   int linked;             // the links exist (made or read from a restart file)
   const int *level;       // the level of each atom type (the GP pair style's)
-  double stats[3];        // linked particles, members per particle, largest member distance
+  double stats[4];        // linked particles, members per particle, largest member distance,
+                          // largest sum of |weights|
   int nmax_arrays;        // allocated per-atom entries
 
   int *nmembers;        // per atom: 0 for all but the linked particles

@@ -252,8 +252,17 @@ def test_command_line(tmp_path):
     assert run.returncode == 0, run.stderr
     assert (tmp_path / "crack.data").is_file() and (tmp_path / "in.crack").is_file()
     fragment = (tmp_path / "in.crack").read_text()
-    assert "fix             gplink imaginary gp/link real coupling force" in fragment
+    assert "fix             gplink imaginary gp/link real coupling force\n" in fragment
     assert "fix             gpimages images gp/link real level same" in fragment
+    # fit quadratic goes to the interface links only (images keep theirs)
+    spec.write_text(json.dumps(dict(cracked(["ylo", "yhi"]), fit="quadratic")))
+    run = subprocess.run([sys.executable, str(mcatest.ROOT / "tools" / "gp_build.py"), str(spec),
+                          "-o", str(tmp_path / "crackq")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    fragment = (tmp_path / "in.crackq").read_text()
+    assert "fix             gplink imaginary gp/link real coupling force fit quadratic\n" in fragment
+    assert re.search(r"^fix +gpimages images gp/link real level same cutoff \S+ coupling force$",
+                     fragment, re.M)
     bad = dict(cracked([]), ratio=1)
     spec.write_text(json.dumps(bad))
     run = subprocess.run([sys.executable, str(mcatest.ROOT / "tools" / "gp_build.py"), str(spec)],
@@ -287,6 +296,7 @@ def test_command_line(tmp_path):
      r"periodic z length 45.68\S* must exceed twice the search distance \S+ of the surface"),
     ({"potential": {"style": "tersoff"}}, r"potential style 'tersoff'"),
     ({"coupling": "both"}, r"coupling 'both': force or energy"),
+    ({"fit": "cubic"}, r"fit 'cubic': linear or quadratic"),
 ])
 def test_bad_input(change, message):
     spec = dict(three_levels(), **change)

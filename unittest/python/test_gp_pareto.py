@@ -20,6 +20,8 @@ figures rest on, without the timed runs.
 * the shared frame is at least 2 r_c of the coarsest level of any model
   (the EAM density of a held particle next to the interior is that of
   the bulk) and a multiple of the levels' common period;
+* a trailing q (fix gp/link fit quadratic) changes the fit and nothing
+  else;
 * bad model names and sizes stop with a message naming the argument.
 """
 
@@ -92,6 +94,18 @@ def test_builder_warns_of_coarse_crack_faces():
     assert any("WARNING" in line for line in model.summary())
 
 
+def test_quadratic_models():
+    """A trailing q asks fix gp/link for the quadratic fit, nothing else
+    changes: the same particles as the linear model."""
+    L = 2 * gp_pareto.UNIT
+    linear, quadratic = (gp_pareto.spec(name, L) for name in ("k2m3h32s24", "k2m3h32s24q"))
+    assert quadratic.pop("fit") == "quadratic" and linear.pop("fit") == "linear"
+    assert quadratic == linear
+    assert gp_pareto.parse("k2m3h32s24q") == gp_pareto.parse("k2m3h32s24")
+    fragment = gp_build.build(gp_pareto.spec("k2m3h32s24q", L)).commands("k2m3h32s24q.data")
+    assert any(line.endswith("gp/link real coupling force fit quadratic") for line in fragment)
+
+
 def test_frame():
     for models in (["md", "k2m2h32"], ["md", "k3m2h36s36"], ["md", "k2m3h32"], ["md", "k2m4h32s24"]):
         frame = gp_pareto.frame_depth(models)
@@ -104,7 +118,8 @@ def test_frame():
     (["--models", "k2m2h32"], "needs md"),
     (["--models", "md,k4m2h32"], "k 2 or 3"),
     (["--models", "md,k2m5h32"], "2 to 4 levels"),
-    (["--models", "md,gp32"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>]"),
+    (["--models", "md,gp32"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q]"),
+    (["--models", "md,k2m2h32s24p"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q]"),
     (["--units", "0"], "--units 0: at least 1"),
     (["--models", "md,md3"], "'md3': at least 4 a0"),
     (["--units", "1", "--models", "md,k2m3h32"], "the frame"),
