@@ -134,7 +134,7 @@ def frame_depth(models):
 
 
 def spec(name, L):
-    k, levels, H, S = parse(name)
+    k, levels, H, S, _, fit = parse_all(name)
     nz = model_thickness(name)
     if levels == 1:
         regions = [None]
@@ -152,7 +152,7 @@ def spec(name, L):
             "potential": {"style": "eam/fs", "file": "Fe_mm.eam.fs"}, "ratio": max(k, 2),
             "box": [-L - 1e-4, L - 1e-4, -L - 1e-4, L - 1e-4, 0, nz * A0], "periodic": "z",
             "cuts": [{"crack": {"tip": 1.0, "y": 0, "height": 4.5}}], "levels": regions,
-            "fit": parse_all(name)[5]}
+            "fit": fit}
 
 
 def run_model(name, L, frame, args, work):

@@ -35,9 +35,6 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-static_assert(FixGPLink::MAX_MEMBERS == GPKernels::MAX_LINK_MEMBERS,
-              "the link kernels' work arrays hold MAX_MEMBERS members");
-
 static constexpr int MIN_MEMBERS = 4;
 
 /* ----------------------------------------------------------------------
@@ -61,6 +58,15 @@ FixGPLink::FixGPLink(LAMMPS *lmp, int narg, char **arg) :
                arg[3]);
   real_bit = group->bitmask[real_group];
 
+  // a keyword with two values: 0 for the first, 1 for the second
+  auto second_of = [&](const std::string &key, const std::string &value, const char *first,
+                       const char *second) {
+    if (value == first) return 0;
+    if (value == second) return 1;
+    error->all(FLERR, "Fix gp/link: {} must be {} or {}, got {}", key, first, second, value);
+    return 0;
+  };
+
   int iarg = 4;
   while (iarg < narg) {
     const std::string key = arg[iarg];
@@ -76,29 +82,11 @@ FixGPLink::FixGPLink(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Fix gp/link: cutoff must be > 0 (distance units), got {}",
                    arg[iarg + 1]);
     } else if (key == "level") {
-      const std::string value = arg[iarg + 1];
-      if (value == "adjacent")
-        same_level = 0;
-      else if (value == "same")
-        same_level = 1;
-      else
-        error->all(FLERR, "Fix gp/link: level must be adjacent or same, got {}", value);
+      same_level = second_of(key, arg[iarg + 1], "adjacent", "same");
     } else if (key == "coupling") {
-      const std::string value = arg[iarg + 1];
-      if (value == "force")
-        energy_coupling = 0;
-      else if (value == "energy")
-        energy_coupling = 1;
-      else
-        error->all(FLERR, "Fix gp/link: coupling must be force or energy, got {}", value);
+      energy_coupling = second_of(key, arg[iarg + 1], "force", "energy");
     } else if (key == "fit") {
-      const std::string value = arg[iarg + 1];
-      if (value == "linear")
-        quadratic_fit = 0;
-      else if (value == "quadratic")
-        quadratic_fit = 1;
-      else
-        error->all(FLERR, "Fix gp/link: fit must be linear or quadratic, got {}", value);
+      quadratic_fit = second_of(key, arg[iarg + 1], "linear", "quadratic");
     } else {
       error->all(FLERR,
                  "Fix gp/link: unknown keyword {} (allowed: members, cutoff, level, coupling, fit)",

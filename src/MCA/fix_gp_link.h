@@ -21,6 +21,7 @@ FixStyle(gp/link,FixGPLink);
 #define LMP_FIX_GP_LINK_H
 
 #include "fix.h"
+#include "gp_link.h"
 
 namespace LAMMPS_NS {
 
@@ -38,7 +39,7 @@ namespace LAMMPS_NS {
 
 class FixGPLink : public Fix {
  public:
-  static constexpr int MAX_MEMBERS = 12;    // (GPKernels::MAX_LINK_MEMBERS)
+  static constexpr int MAX_MEMBERS = GPKernels::MAX_LINK_MEMBERS;
 
   FixGPLink(class LAMMPS *, int, char **);
   ~FixGPLink() override;
