@@ -19,7 +19,11 @@ models with 2, 3 or 4 levels, ratio k = 2 or 3:
                         level m beyond; q: fix gp/link fit quadratic
                         (the interface particles exact for curved
                         fields; without q the linear fit, exact for
-                        uniform strains only); the builder snaps H and S onto
+                        uniform strains only); c: the builder's sites
+                        centroid (each coarse particle at the centroid of
+                        its atoms: the levels' material tiles at every
+                        interface; without c the thesis's common
+                        origin); the builder snaps H and S onto
                         the level-2 planes (k 2: multiples of 8.08 A,
                         k 3: 12.11 A).  S must keep level 2 more than its
                         imaginary depth (2 r_c of level 2: 21.2 A for k 2,
@@ -94,17 +98,17 @@ def shell_width(name):
 
 
 def parse_all(name):
-    """(k, m, H, S, W, fit) of a model name."""
+    """(k, m, H, S, W, fit, sites) of a model name."""
     if re.fullmatch(r"md(\d*)", name):
-        return 1, 1, None, None, None, "linear"
-    m = re.fullmatch(r"k(\d)m(\d)h(\d+)(?:s(\d+))?(?:w(\d+))?(q?)", name)
+        return 1, 1, None, None, None, "linear", "origin"
+    m = re.fullmatch(r"k(\d)m(\d)h(\d+)(?:s(\d+))?(?:w(\d+))?(q?)(c?)", name)
     if not m:
-        raise SystemExit(f"--models: '{name}' is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q]")
+        raise SystemExit(f"--models: '{name}' is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q][c]")
     k, levels, H = int(m[1]), int(m[2]), float(m[3])
     if k not in (2, 3) or not 2 <= levels <= 4:
         raise SystemExit(f"--models: '{name}': k 2 or 3, 2 to 4 levels")
     return (k, levels, H, (float(m[4]) if m[4] else None), (float(m[5]) if m[5] else None),
-            "quadratic" if m[6] else "linear")
+            "quadratic" if m[6] else "linear", "centroid" if m[7] else "origin")
 
 
 def model_thickness(name):
@@ -134,7 +138,7 @@ def frame_depth(models):
 
 
 def spec(name, L):
-    k, levels, H, S, _, fit = parse_all(name)
+    k, levels, H, S, _, fit, sites = parse_all(name)
     nz = model_thickness(name)
     if levels == 1:
         regions = [None]
@@ -152,7 +156,7 @@ def spec(name, L):
             "potential": {"style": "eam/fs", "file": "Fe_mm.eam.fs"}, "ratio": max(k, 2),
             "box": [-L - 1e-4, L - 1e-4, -L - 1e-4, L - 1e-4, 0, nz * A0], "periodic": "z",
             "cuts": [{"crack": {"tip": 1.0, "y": 0, "height": 4.5}}], "levels": regions,
-            "fit": fit}
+            "fit": fit, "sites": sites}
 
 
 def run_model(name, L, frame, args, work):

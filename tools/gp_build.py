@@ -56,6 +56,12 @@ The spec (a dict, or a JSON file) -- lengths in Angstrom:
   fit          "linear" (default) or "quadratic": fix gp/link's fit of
                the interface particles (quadratic: exact for curved
                fields too, for statics near a crack tip)
+  sites        "origin" (default; the thesis: every level's lattice
+               scaled about the common origin, a coarse site on an atom's
+               site) or "centroid" (each level moved as a whole so that
+               its particles sit at the centroids of the atoms they
+               stand for: the levels' material then tiles the volume at
+               every interface, upper and lower faces alike)
 
 Shapes: {"block": [xlo, xhi, ylo, yhi, zlo, zhi]} (null = unbounded),
 {"cylinder": {"axis": "z", "center": [c1, c2], "radius": R}},
@@ -343,6 +349,11 @@ class Model:
         self.neighbor = spec.get("neighbor", "bin")
         if self.neighbor not in ("bin", "multi"):
             raise BuildError(f"neighbor '{self.neighbor}': bin or multi")
+        self.registry = spec.get("sites", "origin")
+        if self.registry not in ("origin", "centroid"):
+            raise BuildError(f"sites '{self.registry}': origin or centroid")
+        self.shift = [self.centroid_shift(n) if self.registry == "centroid" else np.zeros(3)
+                      for n in range(self.nlevels)]
         self.make_particles()
 
     # -- geometry ------------------------------------------------------------
@@ -405,6 +416,17 @@ class Model:
             keep = np.all((x >= lo - TOLERANCE) & (x < hi - TOLERANCE), axis=1)
             out.append(x[keep])
         return np.concatenate(out)
+
+    def centroid_shift(self, n):
+        """The translation that puts each level-n site at the centroid of
+        the atoms it stands for: in a box-aligned cell of the level-n
+        lattice, the mean of the atoms minus the mean of the level-n sites
+        (both lattices scaled about the origin; the cell's faces are the
+        planes the regions snap to, so the atoms of a cell are those of its
+        level-n particles)."""
+        cell = self.scale[n] * self.period
+        zero = np.zeros(3)
+        return self.sites(0, zero, cell).mean(axis=0) - self.sites(n, zero, cell).mean(axis=0)
 
     def wrap(self, x):
         """Periodic sites into the box (a site at hi -> at lo)."""
@@ -502,6 +524,15 @@ class Model:
                     raise BuildError(
                         f"box: the periodic {AXES[d]} length {length:.6g} must exceed twice the "
                         f"search distance {reach:.6g} of the surface images' links")
+        if self.registry == "centroid":
+            # the regions and depths were decided on the lattices scaled about
+            # the origin (a particle belongs where its cell of atoms lies);
+            # each level now moves as a whole to the centroids of its cells
+            for n in range(self.nlevels):
+                for group in (self.real, self.imaginary, self.images):
+                    if len(group[n]):
+                        group[n] = self.wrap(group[n] + self.shift[n])
+            self.trees = {}
         self.check_members()
         self.check_cuts()
 
@@ -635,6 +666,9 @@ class Model:
         lines.append(f"  {particles} real particles stand for {atoms} atoms "
                      f"({atoms / particles:.3g} per real particle, {atoms / total:.3g} per particle "
                      "with the imaginary ones)")
+        if self.registry == "centroid":
+            lines += [f"  sites: centroids of their atoms (level {n + 1} moved by "
+                      f"{' '.join(f'{v:.6g}' for v in self.shift[n])} A)" for n in range(1, self.nlevels)]
         lines += ["  snapped: " + s for s in self.snapped]
         lines += ["  " + w for w in self.warnings]
         return lines

@@ -10,7 +10,7 @@ three (110) planes removed, faces 8.1 A apart, beyond the cutoff).
 
   md.n      all atoms
   gpH.n     atoms in x < H, |y| < H (the crack faces are atomic all along),
-            level-2 particles (k = 2) elsewhere
+            level-2 particles (k = 2) elsewhere, fix gp/link fit quadratic
 
   make_models.py n H [H ...]   (H in A; writes md.n.data, in.md.n, ...;
                                 prints L)
@@ -29,17 +29,20 @@ A0 = 2.855324
 PERIOD = 2 * math.sqrt(2) * A0          # level 2 along X and Y
 
 
-def cracked_plate(xlo, xhi, ylo, yhi, tip, atoms):
+def cracked_plate(xlo, xhi, ylo, yhi, tip, atoms, fit="quadratic"):
     """The Fe plate of this example's models, [xlo, xhi) x [ylo, yhi) x 8 a0,
     an edge crack from xlo to tip; all atoms (atoms None) or atoms in x < X,
     |y| < Y (atoms = (X, Y)) and level 2 elsewhere.  The box is shifted down by 1e-4 A: the
     planes at the lower faces are in, those at the upper ones out (as the
-    builder's half-open regions), the same for all levels."""
+    builder's half-open regions), the same for all levels.  fit: fix
+    gp/link's fit of the interface particles (quadratic, exact for the
+    curved crack-tip field, is the advice for crack tips; the K-test
+    measured both)."""
     return {"lattice": "bcc", "a0": A0, "element": "Fe",
             "orient": [[1, 1, 0], [-1, 1, 0], [0, 0, 1]],
             "potential": {"style": "eam/fs", "file": "Fe_mm.eam.fs"}, "ratio": 2,
             "box": [xlo - 1e-4, xhi - 1e-4, ylo - 1e-4, yhi - 1e-4, 0, 8 * A0], "periodic": "z",
-            "cuts": [{"crack": {"tip": tip, "y": 0, "height": 4.5}}],
+            "cuts": [{"crack": {"tip": tip, "y": 0, "height": 4.5}}], "fit": fit,
             "levels": [None] if atoms is None else
             [{"block": [None, atoms[0], -atoms[1], atoms[1], None, None]}, None]}
 

@@ -15,6 +15,9 @@
   energy per atom and sigma_yy of the real particles equal those of a
   pure level-1 crystal strained alike to round-off (1e-10; the issue
   asks for 1 % between the two-level and the pure S1 stress-strain curve);
+* sites centroid: the coarse particles at the centroids of their atoms
+  (the real particles have the atomic crystal's centre of mass, 1e-9 A;
+  the common origin is off by more than 1 A), the patch test as above;
 * cut-outs and surface images: a two-level model with an edge crack, a
   hole, free x faces and images beyond the y faces has no particle in a
   cut, images only beyond the y faces, every imaginary particle and image
@@ -88,6 +91,34 @@ def test_tiling_and_snapping(tmp_path):
     assert len(coarse) and all(tuple(np.round(x, 6)) in fine for x in coarse)
 
 
+def test_centroid_sites():
+    """sites centroid: every coarse particle sits at the centroid of the
+    atoms it stands for, so the real particles, weighted by the atoms they
+    stand for, have the centre of mass of the atomic crystal of the box
+    (round-off); with the thesis's common origin a level-n particle sits
+    on the first atom of its cell and the model's centre of mass is off
+    by about (s_n - 1)/4 of a lattice period (Angstroms).  The regions,
+    and so the particle counts, are the same."""
+    spec = dict(three_levels(), periodic="z")
+    atoms = gp_build.build(spec).sites(0, np.array(spec["box"][0::2], dtype=float),
+                                       np.array(spec["box"][1::2], dtype=float))
+    offsets = {}
+    for sites in ("origin", "centroid"):
+        model = gp_build.build(dict(spec, sites=sites))
+        weights = np.concatenate([np.full(len(model.real[n]), 8.0 ** n) for n in range(3)])
+        centre = np.average(np.concatenate(model.real), axis=0, weights=weights)
+        offsets[sites] = np.abs(centre - atoms.mean(axis=0)).max()
+        assert weights.sum() == len(atoms)
+        assert [len(r) for r in model.real] == [len(r) for r in gp_build.build(spec).real]
+    print(f"\ncentre of mass of the real particles - the atoms': origin {offsets['origin']:.3f} A, "
+          f"centroid {offsets['centroid']:.1e} A")
+    assert offsets["centroid"] < 1e-9
+    assert offsets["origin"] > 1.0
+    shift = gp_build.build(dict(spec, sites="centroid")).shift
+    # bcc X = [110], Y = [-110], Z = [001]: a quarter period per level step
+    assert np.allclose(shift[1], [PX / 4, PX / 4, PZ / 4]) and np.allclose(shift[2], 3 * shift[1])
+
+
 PATCH = """
 include         in.model
 variable        f2 atom fx*fx+fy*fy+fz*fz
@@ -105,13 +136,14 @@ print           "BULK $(sqrt(c_frms):%.6e)"
 """
 
 
-def test_patch_test_three_levels(build, tmp_path):
-    model = write(three_levels(), tmp_path)
+@pytest.mark.parametrize("sites", ["origin", "centroid"])
+def test_patch_test_three_levels(build, tmp_path, sites):
+    model = write(dict(three_levels(), sites=sites), tmp_path)
     out = build.run(PATCH, tmp_path).stdout
     largest = float(re.search(r"^PATCH (\S+)", out, re.M).group(1))
     bulk = float(re.search(r"^BULK (\S+)", out, re.M).group(1))
     linked = re.search(r"fix gp/link: (\d+) imaginary particles linked to ([0-9.]+)", out)
-    print(f"\nthree levels: largest force {largest:.3e} eV/A = {largest / bulk:.1e} of the rms "
+    print(f"\nthree levels, sites {sites}: largest force {largest:.3e} eV/A = {largest / bulk:.1e} of the rms "
           f"force {bulk:.3f} eV/A of a displaced model; {linked.group(1)} imaginary particles")
     assert int(linked.group(1)) == sum(map(len, model.imaginary))
     assert float(linked.group(2)) == 12.0
@@ -297,6 +329,7 @@ def test_command_line(tmp_path):
     ({"potential": {"style": "tersoff"}}, r"potential style 'tersoff'"),
     ({"coupling": "both"}, r"coupling 'both': force or energy"),
     ({"fit": "cubic"}, r"fit 'cubic': linear or quadratic"),
+    ({"sites": "corner"}, r"sites 'corner': origin or centroid"),
 ])
 def test_bad_input(change, message):
     spec = dict(three_levels(), **change)

@@ -4,13 +4,14 @@ Y = [-110], Z = [001], plane strain), a block of half width 64.6 A (8
 level-2 periods; the example: 96.9 and 145.4 A) whose frame is held at the
 two-term LEFM field of K = 0.399 MPa m^0.5, T = -1.34 GPa, the interior
 relaxed; the full-MD model and GP models (made by tools/gp_build.py) with
-atoms within 16 and 32 A of the crack, level-2 particles elsewhere.
+atoms within 16 and 32 A of the crack, level-2 particles elsewhere (fix
+gp/link fit quadratic, as the example).
 
 * GP against full MD of the same block (the coarse-graining error, r >= 5
   A from the tip): the 32 A model within 5 % in u_y on the Y axis (the
-  issue's bound; measured 2.0 %) and on the R = 15 A circle (1.8 % of the
-  largest u_r); the error falls as the atomic region grows (16 A: 5.7 %,
-  6.2 %);
+  issue's bound; measured 0.67 %, with the linear fit 2.0 %) and on the R
+  = 15 A circle (0.30 % of the largest u_r; linear 1.8 %); the error
+  falls as the atomic region grows (16 A: 2.0 %, 3.9 %);
 * full MD against the isotropic two-term LEFM field (E = 224 GPa, nu =
   0.3, the thesis's constants; Fe is anisotropic and its crack faces are
   a slit of three removed planes): u_y on the Y axis within 25 % (measured

@@ -31,7 +31,8 @@ the other's region next to the two interfaces).
   run (gp/eam/fs/kk) follows the CPU trajectory to round-off; the same
   trajectories on 1, 2 and 4 ranks (round-off, 1e-9 A over 100 steps) and
   across a restart file (the run split in memory, 1e-12 A: the file's
-  atom order changes the order of the sums; measured 1.4e-14);
+  atom order changes the order of the sums; measured 1.4e-14), with fit
+  linear and fit quadratic;
 * surface images (level same): a strained free level-2 slab has the
   energy per particle of the strained periodic crystal to round-off (Fe
   EAM, Cu Morse); at 300 K (a strong thermostat) the Cu Morse slab (the
@@ -180,34 +181,40 @@ pair_coeff      * * Fe_mm.eam.fs Fe Fe Fe Fe level 1 2 1 2
 neighbor        1.0 multi
 group           real type 1 2
 group           imaginary type 3 4
-fix             link imaginary gp/link real
+fix             link imaginary gp/link real fit {fit}
 fix             nve real nve
 timestep        0.001
 """
 
 
-def final_positions(build, directory, middle="", nprocs=1, extra=()):
+def final_positions(build, directory, middle="", nprocs=1, extra=(), fit="linear"):
     """Positions after 100 steps, in the order of the initial positions
     (create_atoms numbers the atoms in the order of the ranks)."""
-    script = TRAJECTORY.format(model=MODEL, first=50, middle=middle, second=50)
-    build.run(script, directory, nprocs=nprocs, variables={"nx": 12}, extra_args=extra)
+    script = TRAJECTORY.format(model=MODEL, first=50, middle=middle.format(fit=fit), second=50)
+    build.run(script, directory, nprocs=nprocs, variables={"nx": 12, "fit": fit},
+              extra_args=extra)
     start, end = (mcatest.read_dump(directory / name)[0] for name in ("initial.dump", "final.dump"))
     order = np.lexsort(np.round([start["z"], start["y"], start["x"]], 6))
     return np.column_stack([end["x"], end["y"], end["z"]])[order]
 
 
-def test_ranks_and_restart(build, tmp_path):
+@pytest.mark.parametrize("fit", ["linear", "quadratic"])
+def test_ranks_and_restart(build, tmp_path, fit):
     """The links are the same on any number of ranks (nearest members, ties
-    by tag) and move with their particles; a restart file holds them (to
-    round-off: the file's atom order changes the order of the sums)."""
-    one = final_positions(build, tmp_path / "one")
+    by tag) and move with their particles; a restart file holds them and
+    their weights (to round-off: the file's atom order changes the order of
+    the sums).  With fit quadratic the weights come from a linear system
+    solved once per particle: the same on every rank."""
+    one = final_positions(build, tmp_path / "one", fit=fit)
     for nprocs in (2, 4):
-        other = final_positions(build, tmp_path / f"ranks{nprocs}", nprocs=nprocs)
-        print(f"\n{nprocs} ranks: largest position difference {np.abs(other - one).max():.2e} A")
+        other = final_positions(build, tmp_path / f"ranks{nprocs}", nprocs=nprocs, fit=fit)
+        print(f"\nfit {fit}, {nprocs} ranks: largest position difference "
+              f"{np.abs(other - one).max():.2e} A")
         assert np.abs(other - one).max() <= 1e-9
-    split = final_positions(build, tmp_path / "split", middle="run 0")
-    restarted = final_positions(build, tmp_path / "restart", middle=RESTART_MIDDLE)
-    print(f"restart: largest position difference {np.abs(restarted - split).max():.2e} A")
+    split = final_positions(build, tmp_path / "split", middle="run 0", fit=fit)
+    restarted = final_positions(build, tmp_path / "restart", middle=RESTART_MIDDLE, fit=fit)
+    print(f"fit {fit}, restart: largest position difference "
+          f"{np.abs(restarted - split).max():.2e} A")
     assert np.abs(restarted - split).max() <= 1e-12
 
 

@@ -21,7 +21,8 @@ figures rest on, without the timed runs.
   (the EAM density of a held particle next to the interior is that of
   the bulk) and a multiple of the levels' common period;
 * a trailing q (fix gp/link fit quadratic) changes the fit and nothing
-  else;
+  else; a trailing c (the builder's sites centroid) moves each coarse
+  level as a whole and changes no count;
 * bad model names and sizes stop with a message naming the argument.
 """
 
@@ -106,6 +107,21 @@ def test_quadratic_models():
     assert any(line.endswith("gp/link real coupling force fit quadratic") for line in fragment)
 
 
+def test_centroid_models():
+    """A trailing c asks the builder for sites centroid, nothing else
+    changes: the same regions and particle counts, each coarse level moved
+    as a whole (a quarter period per level step along X, Y, Z)."""
+    L = 2 * gp_pareto.UNIT
+    origin, centroid = (gp_pareto.spec(name, L) for name in ("k2m3h32s24q", "k2m3h32s24qc"))
+    assert centroid.pop("sites") == "centroid" and origin.pop("sites") == "origin"
+    assert centroid == origin
+    a, b = (gp_build.build(gp_pareto.spec(name, L)) for name in ("k2m3h32s24q", "k2m3h32s24qc"))
+    assert [len(x) for x in a.real] == [len(x) for x in b.real]
+    assert [len(x) for x in a.imaginary] == [len(x) for x in b.imaginary]
+    quarter = np.array([math.sqrt(2), math.sqrt(2), 1.0]) * gp_pareto.A0 / 4
+    assert np.allclose(b.shift[1], quarter) and np.allclose(b.shift[2], 3 * quarter)
+
+
 def test_frame():
     for models in (["md", "k2m2h32"], ["md", "k3m2h36s36"], ["md", "k2m3h32"], ["md", "k2m4h32s24"]):
         frame = gp_pareto.frame_depth(models)
@@ -118,8 +134,9 @@ def test_frame():
     (["--models", "k2m2h32"], "needs md"),
     (["--models", "md,k4m2h32"], "k 2 or 3"),
     (["--models", "md,k2m5h32"], "2 to 4 levels"),
-    (["--models", "md,gp32"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q]"),
-    (["--models", "md,k2m2h32s24p"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q]"),
+    (["--models", "md,gp32"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q][c]"),
+    (["--models", "md,k2m2h32s24p"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q][c]"),
+    (["--models", "md,k2m2h32s24cq"], "is not md[<N>] or k<k>m<m>h<H>[s<S>][w<W>][q][c]"),
     (["--units", "0"], "--units 0: at least 1"),
     (["--models", "md,md3"], "'md3': at least 4 a0"),
     (["--units", "1", "--models", "md,k2m3h32"], "the frame"),
