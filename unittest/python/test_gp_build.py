@@ -100,21 +100,21 @@ def test_centroid_sites():
     by about (s_n - 1)/4 of a lattice period (Angstroms).  The regions,
     and so the particle counts, are the same."""
     spec = dict(three_levels(), periodic="z")
-    atoms = gp_build.build(spec).sites(0, np.array(spec["box"][0::2], dtype=float),
-                                       np.array(spec["box"][1::2], dtype=float))
+    models = {sites: gp_build.build(dict(spec, sites=sites)) for sites in ("origin", "centroid")}
+    atoms = models["origin"].sites(0, np.array(spec["box"][0::2], dtype=float),
+                                   np.array(spec["box"][1::2], dtype=float))
     offsets = {}
-    for sites in ("origin", "centroid"):
-        model = gp_build.build(dict(spec, sites=sites))
+    for sites, model in models.items():
         weights = np.concatenate([np.full(len(model.real[n]), 8.0 ** n) for n in range(3)])
         centre = np.average(np.concatenate(model.real), axis=0, weights=weights)
         offsets[sites] = np.abs(centre - atoms.mean(axis=0)).max()
         assert weights.sum() == len(atoms)
-        assert [len(r) for r in model.real] == [len(r) for r in gp_build.build(spec).real]
+        assert [len(r) for r in model.real] == [len(r) for r in models["origin"].real]
     print(f"\ncentre of mass of the real particles - the atoms': origin {offsets['origin']:.3f} A, "
           f"centroid {offsets['centroid']:.1e} A")
     assert offsets["centroid"] < 1e-9
     assert offsets["origin"] > 1.0
-    shift = gp_build.build(dict(spec, sites="centroid")).shift
+    shift = models["centroid"].shift
     # bcc X = [110], Y = [-110], Z = [001]: a quarter period per level step
     assert np.allclose(shift[1], [PX / 4, PX / 4, PZ / 4]) and np.allclose(shift[2], 3 * shift[1])
 
