@@ -143,6 +143,25 @@ def kokkos_build():
     return build
 
 
+def on_gpu():
+    """True when the Kokkos tests run with a GPU build (MCA_TEST_GPU=nofma
+    or fma, set by tools/mca-gpu check)."""
+    return os.environ.get("MCA_TEST_GPU", "") in ("nofma", "fma")
+
+
+def kokkos_args(threads=2):
+    """Command-line switches of a Kokkos run on `threads` host threads, or
+    on the GPU with a GPU build.  The GPU stands for the threaded run: its
+    sums are in another order than the CPU style's, as on two threads, so
+    a test of one thread (the CPU's order, bit for bit) is skipped there."""
+    if on_gpu():
+        if threads == 1:
+            pytest.skip("one thread adds in the CPU style's order; on a GPU the "
+                        "two-thread case runs")
+        return ("-k", "on", "g", "1", "-sf", "kk")
+    return ("-k", "on", "t", str(threads), "-sf", "kk")
+
+
 # ---------------------------------------------------------------------------
 # reading LAMMPS output
 

@@ -27,7 +27,7 @@ import numpy as np
 import pytest
 
 from mca_inputs import lattice_data_file
-from mcatest import read_thermo
+from mcatest import kokkos_args, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
@@ -251,7 +251,7 @@ def test_damped_cube_kk_matches_cpu(build, tmp_path, threads):
         pytest.skip("the kk styles are in the kokkos builds")
     cpu, t_cpu = dump_of(build, tmp_path / "cpu")
     kk, t_kk = dump_of(build, tmp_path / "kk",
-                       extra_args=("-k", "on", "t", str(threads), "-sf", "kk"))
+                       extra_args=kokkos_args(threads))
     diff = relative_difference(cpu, kk)
     print(f"\nkk {threads} thread(s) vs CPU: {diff}")
     if threads == 1:

@@ -25,7 +25,7 @@ import sys
 import numpy as np
 import pytest
 
-from mcatest import FCC_CUBE_DATA, field_difference, read_thermo
+from mcatest import FCC_CUBE_DATA, field_difference, kokkos_args, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "fracture"
@@ -285,7 +285,7 @@ def test_pulled_cube_kk_matches_cpu(build, tmp_path, threads):
         pytest.skip("the kk styles are in the kokkos builds")
     cpu, l_cpu, _ = pulled_cube(build, tmp_path / "cpu")
     kk, l_kk, _ = pulled_cube(build, tmp_path / "kk",
-                              extra_args=("-k", "on", "t", str(threads), "-sf", "kk"))
+                              extra_args=kokkos_args(threads))
     assert broken_set(l_cpu) == broken_set(l_kk)
     diff = field_difference(cpu, kk, FIELDS, LINK_FORCE)
     print(f"\nkk {threads} thread(s) vs cpu: {diff}")

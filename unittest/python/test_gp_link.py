@@ -223,7 +223,7 @@ def test_kk_run(tmp_path):
     the trajectory of the CPU styles to round-off (1e-9 A over 100 steps)."""
     build = mcatest.kokkos_build()
     cpu = final_positions(build, tmp_path / "cpu")
-    kk = final_positions(build, tmp_path / "kk", extra=("-k", "on", "t", "2", "-sf", "kk"))
+    kk = final_positions(build, tmp_path / "kk", extra=mcatest.kokkos_args())
     print(f"\nkk - CPU: largest position difference {np.abs(kk - cpu).max():.2e} A")
     assert np.abs(kk - cpu).max() <= 1e-9
 

@@ -91,7 +91,7 @@ def test_pure_levels_have_the_same_energy_and_stress(build, tmp_path, potential)
 def test_pure_levels_with_kk(tmp_path, potential):
     build = mcatest.kokkos_build()
     cpu = static(build, tmp_path / "cpu", 3, potential=potential)
-    kk = static(build, tmp_path / "kk", 3, extra=("-k", "on", "t", "2", "-sf", "kk"),
+    kk = static(build, tmp_path / "kk", 3, extra=mcatest.kokkos_args(),
                 potential=potential)
     for a, b in zip(kk, cpu):
         assert a == pytest.approx(b, rel=1e-12, abs=1e-9)
@@ -321,7 +321,7 @@ def test_eam_level_one_with_kk(tmp_path, potential):
     """gp/eam/.../kk at level 1 and at levels 1 and 2 against the CPU style
     (the Kokkos kernels of the base style with the level tables; 1e-12)."""
     build = mcatest.kokkos_build()
-    kk = ("-k", "on", "t", "2", "-sf", "kk")
+    kk = mcatest.kokkos_args()
     for levels, two in ((" level 1 1", False), (" level 1 2", True)):
         cpu, cpu_f = perturbed(build, tmp_path / f"cpu{levels[-1]}", potential,
                                f"gp/{potential}", levels, two_levels=two)

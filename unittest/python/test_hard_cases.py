@@ -24,7 +24,7 @@ import sys
 import numpy as np
 import pytest
 
-from mcatest import kokkos_build, read_thermo
+from mcatest import kokkos_args, kokkos_build, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "hard_cases"
@@ -100,7 +100,7 @@ def test_notched_plate_kk_matches_cpu(tmp_path, threads):
     build = kokkos_build()
     cpu = plate(build, tmp_path / "cpu", factor=0.5, nsteps=3000, every=20, dumps=1)
     kk = plate(build, tmp_path / "kk", factor=0.5, nsteps=3000, every=20, dumps=1,
-               extra_args=("-k", "on", "t", str(threads), "-sf", "kk"))
+               extra_args=kokkos_args(threads))
     assert cpu["c_frac[1]"][-1] > 100
     assert np.array_equal(cpu["c_frac[1]"], kk["c_frac[1]"])
     for name in ("PotEng", "c_frac[6]", "c_keplate"):

@@ -109,7 +109,7 @@ def test_given_masses_move_between_ranks(build, tmp_path):
 def test_given_masses_with_kk(tmp_path):
     build = mcatest.kokkos_build()
     build.run(SCENE.format(mass=MASS, inertia=INERTIA, name="a"), tmp_path,
-              extra_args=("-k", "on", "t", "2", "-sf", "kk"))
+              extra_args=mcatest.kokkos_args())
     for snap in mcatest.read_dump(tmp_path / "dump.a.txt"):
         check(snap)
 

@@ -22,7 +22,7 @@ import sys
 import numpy as np
 import pytest
 
-from mcatest import FCC_CUBE_DATA, field_difference, read_thermo
+from mcatest import FCC_CUBE_DATA, field_difference, kokkos_args, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLE = ROOT / "examples" / "plasticity"
@@ -324,8 +324,7 @@ def test_pulled_cube_kk_matches_cpu(build, tmp_path, threads):
     if build.name not in ("kokkos", "kokkos5"):
         pytest.skip("the kk styles are in the kokkos builds")
     cpu, _ = pulled_cube(build, tmp_path / "cpu")
-    kk, _ = pulled_cube(build, tmp_path / "kk", extra_args=("-k", "on", "t", str(threads),
-                                                             "-sf", "kk"))
+    kk, _ = pulled_cube(build, tmp_path / "kk", extra_args=kokkos_args(threads))
     diff = field_difference(cpu, kk, FIELDS, LINK_FORCE)
     print(f"\nkk {threads} thread(s) vs CPU: {diff}")
     # one thread: the CPU style's order, bit for bit today (bound of the
