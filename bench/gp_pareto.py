@@ -179,7 +179,7 @@ def run_model(name, L, frame, args, work):
     return {"model": name, "k": k, "levels": levels, "nz": model_thickness(name),
             "front_nm": model_thickness(name) * A0 / 10,
             "real": real, "particles": int(loops[-1][3]),
-            "atoms": sum(len(model.real[n]) * model.scale[n] ** 3 for n in range(model.nlevels)),
+            "atoms": model.atoms(),
             "core_s": sum(float(t) * int(p) for t, p, _, _ in loops),
             "steps": sum(int(s) for _, _, s, _ in loops), "build_s": built,
             "warnings": len(model.warnings)}

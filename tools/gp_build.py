@@ -627,6 +627,10 @@ class Model:
         """The mass of a level-n particle, l_n m0."""
         return self.mass * self.scale[n] ** 3
 
+    def atoms(self):
+        """The number of atoms the real particles stand for (l_n each)."""
+        return sum(len(self.real[n]) * self.scale[n] ** 3 for n in range(self.nlevels))
+
     def types(self):
         """(kind, level) of each atom type, 1-based order: real levels, imaginary, images."""
         t = [("real", n) for n in range(self.nlevels)]
@@ -660,7 +664,7 @@ class Model:
             lines.append(f"  level {n + 1}: {len(self.real[n])} real, {len(self.imaginary[n])} "
                          f"imaginary, {len(self.images[n])} images (s {self.scale[n]}, depth "
                          f"{self.depth[n]:.4g} A)")
-        atoms = sum(len(self.real[n]) * self.scale[n] ** 3 for n in range(self.nlevels))
+        atoms = self.atoms()
         particles = sum(len(self.real[n]) for n in range(self.nlevels))
         total = particles + sum(len(i) + len(j) for i, j in zip(self.imaginary, self.images))
         lines.append(f"  {particles} real particles stand for {atoms} atoms "

@@ -58,20 +58,25 @@ def test_least_thickness(k, levels, expected):
     assert (n - s) * gp_pareto.A0 <= 2 * gp_pareto.RC * s       # the least such
 
 
+def slit_distance(x):
+    """Distance of points x from the benchmark's slit, |y| < 2.25 A from
+    the xlo face to the tip at x = 1 A."""
+    return np.hypot(np.maximum(x[:, 0] - 1.0, 0), np.maximum(np.abs(x[:, 1]) - 2.25, 0))
+
+
 def test_models_are_the_same_block():
     L = 2 * gp_pareto.UNIT
     per_a0 = {}
     for name in MODELS:
         model = gp_build.build(gp_pareto.spec(name, L))
         k, levels, _, _ = gp_pareto.parse(name)
-        atoms = sum(len(model.real[n]) * model.scale[n] ** 3 for n in range(model.nlevels))
-        per_a0[name] = atoms / gp_pareto.model_thickness(name)
+        per_a0[name] = model.atoms() / gp_pareto.model_thickness(name)
         # the slit |y| < 2.25 A from the xlo face to the tip at x = 1 A
         for n in range(1, model.nlevels):
             x = model.real[n]
             if len(x) == 0:       # k2m4 at this size: level 4 lies beyond the block
                 continue
-            gap = np.hypot(np.maximum(x[:, 0] - 1.0, 0), np.maximum(np.abs(x[:, 1]) - 2.25, 0))
+            gap = slit_distance(x)
             depth = 2 * gp_pareto.RC * k ** n
             assert gap.min() > depth, f"{name}: level {n + 1} at {gap.min():.3g} A of the crack"
         assert model.warnings == []
@@ -83,8 +88,7 @@ def test_models_are_the_same_block():
 
 def test_builder_warns_of_coarse_crack_faces():
     model = gp_build.build(gp_pareto.spec("k2m2h32s12", 2 * gp_pareto.UNIT))
-    x = model.real[1]
-    gap = np.hypot(np.maximum(x[:, 0] - 1.0, 0), np.maximum(np.abs(x[:, 1]) - 2.25, 0))
+    gap = slit_distance(model.real[1])
     near = int(np.sum(gap <= 2 * gp_pareto.RC * 2 + 1e-6))
     assert near > 0
     assert len(model.warnings) == 1
