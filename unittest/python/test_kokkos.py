@@ -49,7 +49,7 @@ import pathlib
 import numpy as np
 import pytest
 
-from mcatest import kokkos_build, read_dump
+from mcatest import kokkos_build, on_gpu, read_dump
 
 EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "examples"
 
@@ -244,7 +244,7 @@ def test_kk_matches_cpu(scene, mode, workdir):
 
 
 def require_gpu():
-    if GPU not in ("nofma", "fma"):
+    if not on_gpu():
         pytest.skip("no GPU build: see tools/mca-gpu (MCA_TEST_GPU=nofma or fma)")
 
 

@@ -74,11 +74,12 @@ def test_same_estimate_on_cpu_kk_and_ranks(tmp_path):
     build = mcatest.kokkos_build()
     script = scene_script("fcc nu=0.45").replace("run             ${nsteps}", "")
     values = {}
-    modes = [("cpu", 1, ()), ("kk1", 1, ("-k", "on", "t", "1", "-sf", "kk")),
-             ("kk2", 1, ("-k", "on", "t", "2", "-sf", "kk")), ("cpu2", 2, ()), ("cpu4", 4, ())]
     if mcatest.on_gpu():
         # a GPU build is serial: the estimate on the GPU against the CPU style
         modes = [("cpu", 1, ()), ("kk2", 1, mcatest.kokkos_args())]
+    else:
+        modes = [("cpu", 1, ()), ("kk1", 1, mcatest.kokkos_args(1)),
+                 ("kk2", 1, mcatest.kokkos_args(2)), ("cpu2", 2, ()), ("cpu4", 4, ())]
     for name, nprocs, args in modes:
         result = build.run(script, tmp_path / name, nprocs=nprocs, extra_args=args,
                            variables={"f": 0.5, "nsteps": 0})
