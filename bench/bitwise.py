@@ -48,6 +48,12 @@ SCENES = {  # name: (input under examples/, variables)
     "energy": ("energy/in.energy", {"factor": 1}),
     "rigid": ("energy/in.rigid", {}),
     "rolling": ("rolling/in.rolling", {"packing": "fcc"}),
+    # the parts of the link law (plasticity, fracture, damping)
+    "plastic_box": ("plasticity/in.plastic_box", {}),
+    "load_unload": ("plasticity/in.load_unload", {"n": 4}),
+    "fracture_box": ("fracture/in.box", {"srate": 7.0e9}),  # breaks from step ~30 on
+    "damping": ("damping/in.damping", {"n": 4}),
+    "notched_plate": ("hard_cases/in.notched_plate", {"nx": 12, "ny": 12}),
 }
 MODES = {  # name: (MPI ranks, OpenMP threads, Kokkos)
     "cpu": (1, 1, False), "cpu2": (2, 1, False), "kk1": (1, 1, True), "kk2": (1, 2, True)}

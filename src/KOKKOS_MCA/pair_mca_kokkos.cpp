@@ -100,6 +100,8 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::init_style()
                                                       "pair:hardening");
   d_break_rules = MCAKokkos::copy_to_device<DeviceType>(
       break_rules.data(), (atom->ntypes + 1) * (atom->ntypes + 1), "pair:break_rules");
+  d_contact_rules = MCAKokkos::copy_to_device<DeviceType>(
+      contact_rules.data(), (atom->ntypes + 1) * (atom->ntypes + 1), "pair:contact_rules");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -189,6 +191,7 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
   d.break_rules = d_break_rules;
   d.break_stride = atom->ntypes + 1;
   d.damage = avecKK->k_damage.template view<DeviceType>();
+  d.contact_rules = d_contact_rules;
   if (eflag_atom) d.eatom = k_eatom.template view<DeviceType>();
   if (vflag_atom) d.vatom = k_vatom.template view<DeviceType>();
   d.nlocal = atom->nlocal;
@@ -385,8 +388,9 @@ template <class DeviceType> int PairMCAKokkos<DeviceType>::chunks() const
 
 /* ----------------------------------------------------------------------
    a kernel over the links with the link sums and the energy tally: the
-   link pass of a law (MCALinkPassOf<Law>::type) or the broken pass
-   (MCABrokenPass); its energy and virial are added to sums
+   link pass of a law (MCALinkPassOf<Law>::type) or the pass of the pairs
+   that push in a state (MCAPushingPassOf<State>::type); its energy and
+   virial are added to sums
 ------------------------------------------------------------------------- */
 
 template <class DeviceType>
@@ -530,6 +534,11 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     atomKK->sync(Host, X_MASK | TAG_MASK);
     links->to_host();
     if (fractured()) forget_broken_links();
+    if (contacts() && neighbor->ago == 0) {
+      // (new contact rows read the radii, types and cells of the automata)
+      atomKK->sync(Host, RADIUS_MASK | TYPE_MASK | MCA_GEOMETRY_MASK);
+      update_contacts();
+    }
     refresh_partners();
     linksKK->to_device();
     k_partner_cache.modify_host();
@@ -564,8 +573,9 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     // a setup returns no automaton (see PairMCA::compute())
     link_kernel<MCALinkPassOf<LAW_PLASTIC_SETUP>::template type>(commit, lazy, sums);
   }
-  // broken pairs: their compressive force only
-  if (fractured()) link_kernel<MCABrokenPass>(commit, lazy, sums);
+  // broken pairs: their compressive force (and friction) only
+  if (fractured()) link_kernel<MCAPushingPassOf<LINK_BROKEN>::template type>(commit, lazy, sums);
+  if (contacts()) link_kernel<MCAPushingPassOf<LINK_CONTACT>::template type>(commit, lazy, sums);
 
   MCALinkFinish<DeviceType> finish;
   finish.d = d;

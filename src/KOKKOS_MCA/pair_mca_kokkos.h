@@ -105,6 +105,7 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   Kokkos::View<MCAKernels::MCAHardening *, DeviceType> d_hardening;
   // fracture: the rules by type pair
   Kokkos::View<MCAKernels::MCABreakRule *, DeviceType> d_break_rules;
+  Kokkos::View<MCAKernels::MCAContactRule *, DeviceType> d_contact_rules;
   // per local automaton: link count, fabric tensor, and the sums of the
   // predictor, of the link pass and of the per-atom energy and virial
   typedef typename MCAScatter<DeviceType>::direct direct_type;

@@ -68,6 +68,8 @@ template <class DeviceType> struct MCAPairViews {
   Kokkos::View<MCABreakRule *, DeviceType> break_rules;
   int break_stride;
   double_1d damage;
+  // contacts: rules by type pair (the same stride)
+  Kokkos::View<MCAContactRule *, DeviceType> contact_rules;
   int_1d link_count, foreign;
   double_2d fabric, predictor_sums, link_sums, atom_tally;
   Kokkos::View<MCAMaterial *, DeviceType> material;
@@ -105,6 +107,10 @@ template <class DeviceType> struct MCAPairViews {
   KOKKOS_INLINE_FUNCTION const MCABreakRule &break_rule(int ti, int tj) const
   {
     return break_rules(ti * break_stride + tj);
+  }
+  KOKKOS_INLINE_FUNCTION const MCAContactRule &contact_rule(int ti, int tj) const
+  {
+    return contact_rules(ti * break_stride + tj);
   }
 };
 
@@ -381,7 +387,7 @@ template <class DeviceType, class Sums, class TallyScatter, int Law> struct MCAL
 };
 
 // the link pass of a law as a template of (device, sums, tally), as
-// MCABrokenPass (PairMCAKokkos::link_kernel)
+// MCAPushingPassOf (PairMCAKokkos::link_kernel)
 template <int Law> struct MCALinkPassOf {
   template <class DeviceType, class Sums, class TallyScatter>
   using type = MCALinkPass<DeviceType, Sums, TallyScatter, Law>;
@@ -422,7 +428,7 @@ template <class DeviceType> struct MCAPlasticReturnPass {
    stress of the step is known, the damage of each automaton
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, class Sums, class TallyScatter> struct MCABrokenPass {
+template <class DeviceType, class Sums, class TallyScatter, int State> struct MCAPushingPass {
   typedef DeviceType device_type;
   typedef MCALinkSums value_type;
   MCAPairViews<DeviceType> d;
@@ -432,8 +438,16 @@ template <class DeviceType, class Sums, class TallyScatter> struct MCABrokenPass
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i, MCALinkSums &ev) const
   {
-    broken_pass_of(d, sums, tally, flags, i, ev);
+    pushing_pass_of<State>(d, sums, tally, flags, i, ev);
   }
+};
+
+// the pass of the pairs that push in one state (LINK_BROKEN: the broken
+// pairs; LINK_CONTACT: the contacts, mca_contact.h) as a template of
+// (device, sums, tally) (PairMCAKokkos::link_kernel)
+template <int State> struct MCAPushingPassOf {
+  template <class DeviceType, class Sums, class TallyScatter>
+  using type = MCAPushingPass<DeviceType, Sums, TallyScatter, State>;
 };
 
 template <class DeviceType> struct MCAFracturePass {

@@ -20,6 +20,7 @@
 #include "error.h"
 #include "fix_mca_links.h"
 #include "mca_compat.h"
+#include "mca_contact.h"
 #include "mca_link_law.h"
 #include "memory.h"
 #include "update.h"
@@ -29,10 +30,28 @@
 using namespace LAMMPS_NS;
 
 namespace {
-enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, SMEAN, SEQ, EEQ, LINKS, EPSP, PLASTIC_WORK, DAMAGE, NKEYWORD };
-const char *const keywords[NKEYWORD] = {"sxx",  "syy",          "szz",   "sxy", "sxz",
-                                        "syz",  "smean",        "seq",   "eeq", "links",
-                                        "epsp", "plastic_work", "damage"};
+enum {
+  SXX,
+  SYY,
+  SZZ,
+  SXY,
+  SXZ,
+  SYZ,
+  SMEAN,
+  SEQ,
+  EEQ,
+  LINKS,
+  EPSP,
+  PLASTIC_WORK,
+  DAMAGE,
+  CONTACTS,
+  FRICTION,
+  CONTACT_WORK,
+  NKEYWORD
+};
+const char *const keywords[NKEYWORD] = {
+    "sxx", "syy",   "szz",  "sxy",          "sxz",    "syz",      "smean",    "seq",
+    "eeq", "links", "epsp", "plastic_work", "damage", "contacts", "friction", "contact_work"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -49,7 +68,8 @@ ComputeMCAAtom::ComputeMCAAtom(LAMMPS *lmp, int narg, char **arg) :
     if (k == NKEYWORD)
       error->all(FLERR,
                  "Unknown compute mca/atom keyword {} (allowed: sxx syy szz sxy sxz syz "
-                 "smean seq eeq links epsp plastic_work damage)",
+                 "smean seq eeq links epsp plastic_work damage contacts friction "
+                 "contact_work)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -98,12 +118,32 @@ double ComputeMCAAtom::value(int i, int w)
     const int offset = links->model.layout().atom_offset[MCAKernels::PART_PLASTICITY];
     return offset >= 0 ? links->atom_state[i][offset + MCAKernels::PA_WORK] : 0.0;
   }
-  // links: linked partners of the automaton
+  const MCAKernels::MCALinkLayout &layout = links->model.layout();
+  if (w == FRICTION || w == CONTACT_WORK) {
+    // half of what its rows and its dropped contacts hold (each automaton
+    // of a pair holds the whole): the sum over the automata is the total
+    const int ca = layout.atom_offset[MCAKernels::PART_CONTACT];
+    if (ca < 0) return 0.0;
+    if (w == CONTACT_WORK) return 0.5 * links->atom_state[i][ca + MCAKernels::CA_WORK];
+    double sum = links->atom_state[i][ca + MCAKernels::CA_FRICTION];
+    for (int m = 0; m < links->nlinks[i]; m++)
+      sum += MCAKernels::link_friction_work(&links->history[i][m * links->row_size], layout);
+    return 0.5 * sum;
+  }
+  // links: linked partners of the automaton; contacts: the partners it
+  // touches (contact rows that push)
+  const int state = (w == CONTACTS) ? MCAKernels::LINK_CONTACT : MCAKernels::LINK_LINKED;
   int n = 0;
-  for (int m = 0; m < links->nlinks[i]; m++)
-    if (static_cast<int>(links->history[i][m * links->row_size + MCAKernels::H_STATE]) ==
-        MCAKernels::LINK_LINKED)
-      n++;
+  for (int m = 0; m < links->nlinks[i]; m++) {
+    const double *row = &links->history[i][m * links->row_size];
+    if (static_cast<int>(row[MCAKernels::H_STATE]) != state) continue;
+    if (w == CONTACTS &&
+        !(row[MCAKernels::H_LO + MCAKernels::HALF_SIG] +
+              row[MCAKernels::H_HI + MCAKernels::HALF_SIG] <
+          0.0))
+      continue;
+    n++;
+  }
   return n;
 }
 

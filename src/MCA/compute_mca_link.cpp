@@ -21,6 +21,7 @@
 #include "error.h"
 #include "fix_mca_links.h"
 #include "mca_compat.h"
+#include "mca_contact.h"
 #include "mca_geometry.h"
 #include "mca_link_law.h"
 #include "memory.h"
@@ -49,11 +50,13 @@ enum {
   CAUSE,
   BREAK_STEP,
   RELEASED,
+  FRICTION,
   NKEYWORD
 };
-const char *const keywords[NKEYWORD] = {
-    "id1",   "id2",    "state",      "length",       "strain", "normal",     "shear",   "area",
-    "force", "energy", "dissipated", "plastic_work", "cause",  "break_step", "released"};
+const char *const keywords[NKEYWORD] = {"id1",    "id2",        "state",      "length",
+                                        "strain", "normal",     "shear",      "area",
+                                        "force",  "energy",     "dissipated", "plastic_work",
+                                        "cause",  "break_step", "released",   "friction"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -72,7 +75,7 @@ ComputeMCALink::ComputeMCALink(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR,
                  "Unknown compute mca/link keyword {} (allowed: id1 id2 state length "
                  "strain normal shear area force energy dissipated plastic_work cause break_step "
-                 "released)",
+                 "released friction)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -146,6 +149,9 @@ void ComputeMCALink::compute_local()
   const int damping = links->model.layout().link_offset[PART_DAMPING];
   // and the fracture block
   const int fracture = links->model.layout().link_offset[PART_FRACTURE];
+  // friction: broken pairs and contacts rub (a broken pair from its first
+  // step on: until then its row holds the link's shear tractions)
+  const bool friction = links->model.layout().link_offset[PART_CONTACT] >= 0;
   // the rows of the lower IDs are current (links break in them)
   int row = 0;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -163,19 +169,24 @@ void ComputeMCALink::compute_local()
       j = domain->closest_image(i, j);
       const double del[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double r = sqrt(dot3(del, del));
-      // a broken pair pushes only (mca_link_law.h)
+      // a broken pair or a contact pushes only (mca_link_law.h, mca_contact.h)
+      const bool contact = static_cast<int>(h[H_STATE]) == LINK_CONTACT;
       double sig = 0.5 * (h[H_LO + HALF_SIG] + h[H_HI + HALF_SIG]);
-      if (broken(h)) sig = broken_traction(sig);
-      // (and has no shear traction: the row keeps the link's until the
-      // first step of the broken pair)
+      if (broken(h) || contact) sig = broken_traction(sig);
+      // (a broken pair rubs only with friction, and not before its first
+      // step: the row keeps the link's shear tractions until then)
+      const bool no_shear = broken(h) &&
+          (!friction || h[fracture + F_STEP] >= static_cast<double>(update->ntimestep));
       double t[3];
       for (int k = 0; k < 3; k++)
-        t[k] = broken(h) ? 0.0 : 0.5 * (h[H_LO + HALF_T + k] + h[H_HI + HALF_T + k]);
+        t[k] = no_shear ? 0.0 : 0.5 * (h[H_LO + HALF_T + k] + h[H_HI + HALF_T + k]);
       const double tau = sqrt(dot3(t, t));
       const double area = h[H_APREV];
       const double dissipated = damping >= 0 ? h[damping + D_WORK] : 0.0;
-      // the elastic energy is the work of the link forces less the plastic work
+      // the elastic energy is the work of the link forces less the plastic
+      // work and what friction dissipated
       const double plastic_work = link_plastic_work(h, links->model.layout());
+      const double friction_work = link_friction_work(h, links->model.layout());
       for (int c = 0; c < ncols; c++) {
         double value = 0.0;
         switch (which[c]) {
@@ -207,7 +218,7 @@ void ComputeMCALink::compute_local()
             value = area * sqrt(sig * sig + tau * tau);
             break;
           case ENERGY:
-            value = h[H_WORK] - plastic_work;
+            value = h[H_WORK] - plastic_work - friction_work;
             break;
           case DISSIPATED:
             value = dissipated;
@@ -223,6 +234,9 @@ void ComputeMCALink::compute_local()
             break;
           case RELEASED:
             value = fracture >= 0 ? h[fracture + F_RELEASED] : 0.0;
+            break;
+          case FRICTION:
+            value = friction_work;
             break;
         }
         if (size_local_cols == 0)

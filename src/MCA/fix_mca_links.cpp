@@ -184,6 +184,18 @@ void FixMCALinks::set_capacity(int capacity)
   maxexchange = values_per_atom(maxlinks);
 }
 
+/* ---------------------------------------------------------------------- */
+
+void FixMCALinks::remove_row(int i, int m)
+{
+  const int last = nlinks[i] - 1;
+  if (m != last) {
+    partner[i][m] = partner[i][last];
+    memcpy(&history[i][m * row_size], &history[i][last * row_size], row_size * sizeof(double));
+  }
+  nlinks[i] = last;
+}
+
 /* ----------------------------------------------------------------------
    new, empty rows of maxlinks links for nmax atoms
 ------------------------------------------------------------------------- */

@@ -101,6 +101,8 @@ class FixMCALinks : public Fix {
   }
 
   void set_capacity(int);
+  // drop row m of local atom i: the last row takes its place (host)
+  void remove_row(int i, int m);
   class NeighList *build_full_list();
 
   // the host copy of the table is current / was changed on the host (the

@@ -153,6 +153,21 @@ namespace MCACompat {
 #endif
   }
 
+  // a perpetual full neighbor list of a pair style, with an id that tells
+  // it from the style's other lists in init_list()
+  inline void request_full_list(Neighbor *neighbor, Pair *pair, int instance, int id)
+  {
+#ifdef MCA_HAVE_ADD_REQUEST
+    (void) instance;
+    neighbor->add_request(pair, NeighConst::REQ_FULL)->set_id(id);
+#else
+    const int irequest = neighbor->request(pair, instance);
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->id = id;
+#endif
+  }
+
   // forward communication of per-atom data of a pair style
   inline void forward_comm(Comm *comm, Pair *pair)
   {

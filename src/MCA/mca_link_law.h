@@ -114,7 +114,14 @@ namespace MCAKernels {
      its kernel in the link step below and its doc (Developer_mca.rst)
   ------------------------------------------------------------------------- */
 
-  enum LinkPart { PART_ELASTIC = 0, PART_DAMPING, PART_PLASTICITY, PART_FRACTURE, NPARTS };
+  enum LinkPart {
+    PART_ELASTIC = 0,
+    PART_DAMPING,
+    PART_PLASTICITY,
+    PART_FRACTURE,
+    PART_CONTACT,
+    NPARTS
+  };
 
   // the block of the damping part in a link row: the damping force on lo
   // of the last step (normal, tangential) and the energy the link's
@@ -136,6 +143,13 @@ namespace MCAKernels {
   // the energy their breaks released
   enum FractureSlot { F_CAUSE = 0, F_STEP, F_RELEASED, F_SIZE };
   enum FractureAtomSlot { FA_FORGOTTEN = 0, FA_RELEASED = FA_FORGOTTEN + NBREAK - 1, FA_SIZE };
+  // the block of the contact part in a link row: the energy friction
+  // dissipated at the pair; per automaton: what its dropped contacts left
+  // (the energy their friction dissipated and the work of their forces
+  // less that, each automaton keeping the whole of each of its rows), and
+  // their number (mca_contact.h)
+  enum ContactSlot { C_FRICTION = 0, C_SIZE };
+  enum ContactAtomSlot { CA_FRICTION = 0, CA_WORK, CA_DROPPED, CA_SIZE };
   static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");
 
   struct MCALinkPartInfo {
@@ -151,6 +165,7 @@ namespace MCAKernels {
       {"damping", "viscous", PART_DAMPING, D_SIZE, 0, false},
       {"plasticity", "mises", PART_PLASTICITY, P_SIZE, PA_SIZE, false},
       {"fracture", "links", PART_FRACTURE, F_SIZE, FA_SIZE, false},
+      {"contacts", "coulomb", PART_CONTACT, C_SIZE, CA_SIZE, false},
   };
   constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
   static_assert(MCA_LINK_PARTS[PART_ELASTIC].part == PART_ELASTIC,
@@ -629,12 +644,13 @@ namespace MCAKernels {
   }
 
   // one step of a broken pair (hist updated, as linked_pair); first: the
-  // first step after the break
-  MCA_FORCE_INLINE void broken_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
-                                    const MCAMaterial &mat_hi, bool first, MCALinkForces &out)
+  // first step after the break.  In two parts, between which the contact
+  // part puts its friction (mca_contact.h): the normal law of the virtual
+  // halves and the pushing traction, then the forces and the work
+  MCA_FORCE_INLINE void broken_pair_normal(double *hist, const MCALinkEnds &e,
+                                           const MCAMaterial &m_lo, const MCAMaterial &m_hi,
+                                           bool first, MCALinkForces &out, MCALinkMotion &mo)
   {
-    const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
-    MCALinkMotion mo;
     link_motion(hist, e, out, mo);
     for (int m = 0; m < 3; m++) mo.dl[m] = 0.0;
     normal_traction(hist, e, m_lo, m_hi, mo);
@@ -649,8 +665,35 @@ namespace MCAKernels {
     }
     link_area(hist, e, m_lo, m_hi, out);
     out.sig = broken_traction(0.5 * (hist[H_LO + HALF_SIG] + hist[H_HI + HALF_SIG]));
+    for (int m = 0; m < 3; m++) out.t[m] = out.couple[m] = 0.0;
+  }
+
+  // the force of a pair that pushes with out.sig and rubs with out.t (a
+  // broken pair, a contact) on lo, its torques (no couple: a pair that is
+  // not linked resists no rolling), and the work of the step
+  MCA_INLINE void pushing_pair_forces(double *hist, const MCALinkMotion &mo, MCALinkForces &out)
+  {
     for (int m = 0; m < 3; m++) {
-      out.t[m] = out.couple[m] = 0.0;
+      out.couple[m] = 0.0;
+      out.trac[m] = out.sig * out.n[m] + out.t[m];
+      out.f[m] = out.area * out.trac[m];
+    }
+    double nxf[3];
+    cross3(out.n, out.f, nxf);
+    for (int m = 0; m < 3; m++) {
+      out.tq_lo[m] = mo.q_lo * nxf[m];
+      out.tq_hi[m] = mo.q_hi * nxf[m];
+    }
+    link_work(hist, mo, out);
+  }
+
+  MCA_FORCE_INLINE void broken_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
+                                    const MCAMaterial &mat_hi, bool first, MCALinkForces &out)
+  {
+    const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
+    MCALinkMotion mo;
+    broken_pair_normal(hist, e, m_lo, m_hi, first, out, mo);
+    for (int m = 0; m < 3; m++) {
       out.f[m] = out.area * out.sig * out.n[m];
       out.tq_lo[m] = out.tq_hi[m] = 0.0;    // a central force
       out.trac[m] = out.sig * out.n[m];

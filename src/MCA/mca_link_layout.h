@@ -69,7 +69,7 @@ namespace MCAKernels {
   // offsets inside a half (ints: C++20 deprecates adding them to the
   // LinkHistory enumerators if they were another enumeration)
   constexpr int HALF_SIG = 0, HALF_EPS = 1, HALF_T = 2, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8;
-  enum LinkState { LINK_NONE = 0, LINK_LINKED = 1, LINK_BROKEN = 2 };
+  enum LinkState { LINK_NONE = 0, LINK_LINKED = 1, LINK_BROKEN = 2, LINK_CONTACT = 3 };
 
   // the elastic block of an automaton's law state (enumerators, not
   // constexpr variables: a Kokkos view takes its indices by reference, and

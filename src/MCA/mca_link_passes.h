@@ -44,6 +44,7 @@
 #ifndef LMP_MCA_LINK_PASSES_H
 #define LMP_MCA_LINK_PASSES_H
 
+#include "mca_contact.h"
 #include "mca_link_law.h"
 #include "mca_mean_stress.h"
 
@@ -372,16 +373,21 @@ namespace MCAKernels {
      thread count breaks the same links
   ------------------------------------------------------------------------- */
 
-  template <class D, class Sums, class Tally, class Totals>
-  MCA_FUNCTION void broken_pass_of(const D &d, const Sums &sums, const Tally &tally,
-                                   const MCALinkPassFlags &p, int i, Totals &totals)
+  // pairs that push (State: the broken pairs, or the contacts of the
+  // contact part, mca_contact.h): the same ownership rule and sums as the
+  // link pass; a force (and, with friction, torques), no traction moment:
+  // such a pair is not part of the automata's stress
+  template <int State, class D, class Sums, class Tally, class Totals>
+  MCA_FUNCTION void pushing_pass_of(const D &d, const Sums &sums, const Tally &tally,
+                                    const MCALinkPassFlags &p, int i, Totals &totals)
   {
     const int ff = d.layout.link_offset[PART_FRACTURE];
+    const bool friction = d.layout.link_offset[PART_CONTACT] >= 0;
     auto add = sums.begin(i);
     for (int m = 0; m < d.nlinks(i); m++) {
       double *row;
       int j;
-      if (!evaluates<LINK_BROKEN>(d, i, m, row, j)) continue;
+      if (!evaluates<State>(d, i, m, row, j)) continue;
       const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
@@ -395,14 +401,29 @@ namespace MCAKernels {
       double scratch[12];
       link_ends_of(d, lo, hi, p.dt, scratch, e);
       MCALinkForces out;
-      const bool first = p.commit && h[ff + F_STEP] == p.step - 1.0;
-      broken_pair(h, e, d.material(d.type(lo)), d.material(d.type(hi)), first, out);
-      const double elastic_work = h[H_WORK] - link_plastic_work(h, d.layout);
+      const MCAMaterial &m_lo = d.material(d.type(lo)), &m_hi = d.material(d.type(hi));
+      if (State == LINK_CONTACT) {
+        contact_pair(h, e, m_lo, m_hi, d.contact_rule(d.type(lo), d.type(hi)).mu, out);
+      } else {
+        const bool first = p.commit && h[ff + F_STEP] == p.step - 1.0;
+        if (friction)
+          broken_pair_friction(h, e, m_lo, m_hi, first, d.contact_rule(d.type(lo), d.type(hi)).mu,
+                               out);
+        else
+          broken_pair(h, e, m_lo, m_hi, first, out);
+      }
+      const double elastic_work =
+          h[H_WORK] - link_plastic_work(h, d.layout) - link_friction_work(h, d.layout);
       const double sign = ilo ? 1.0 : -1.0;
       for (int k = 0; k < 3; k++) sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
+      if (friction)
+        for (int k = 0; k < 3; k++)
+          sums.own(add, i, LS_TORQUE + k, ilo ? out.tq_lo[k] : out.tq_hi[k]);
       if (jlocal) {
         const auto to = sums.partner_of(add, j);
         for (int k = 0; k < 3; k++) sums.partner(add, to, LS_FORCE + k, -out.f[k]);
+        if (friction)
+          for (int k = 0; k < 3; k++) sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
         if (p.commit && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
       }
       if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, elastic_work, out.f);
@@ -470,10 +491,11 @@ namespace MCAKernels {
   template <class D> MCA_FUNCTION double damage_of(const D &d, int i, double break_step)
   {
     const int ff = d.layout.link_offset[PART_FRACTURE];
-    int nbroken = 0;
+    int nbroken = 0, ncontacts = 0;
     double released = 0.0;
     for (int m = 0; m < d.nlinks(i); m++) {
       const double *row = current_row(d, i, m);
+      if (static_cast<int>(row[H_STATE]) == LINK_CONTACT) ncontacts++;
       if (!broken(row)) continue;
       nbroken++;
       if (row[ff + F_STEP] == break_step) released += 0.5 * row[ff + F_RELEASED];
@@ -481,7 +503,8 @@ namespace MCAKernels {
     const int fa = d.layout.atom_offset[PART_FRACTURE];
     double forgotten = 0.0;
     for (int c = 0; c < NBREAK - 1; c++) forgotten += d.atom_state(i, fa + FA_FORGOTTEN + c);
-    const double total = d.nlinks(i) + forgotten;
+    // (the links made at the start: contacts are not links)
+    const double total = d.nlinks(i) - ncontacts + forgotten;
     d.damage(i) = total > 0.0 ? (nbroken + forgotten) / total : 0.0;
     return released;
   }

@@ -84,13 +84,15 @@ namespace MCAKernels {
      ID).  ms_i, ms_j: whether the automaton's mean stress is predicted
      (interacting and packed); finv, h: its inverse fabric tensor and its
      predictor stiffness; chi: the face moment factor of lo's packing.
-     A broken pair acts only while it is compressed, through its normal
-     stiffness; an unlinked pair does not act (kn = kt = kb = 0)          */
+     A broken pair or a contact acts only while it is compressed, through
+     its normal stiffness and, with friction (the contact part), the
+     stiffness of its tangential spring while it sticks; an unlinked pair
+     without a contact row does not act (kn = kt = kb = 0)                */
 
   MCA_INLINE void link_tangent(const double *row, bool i_is_lo, const MCAMaterial &m_i,
                                const MCAMaterial &m_j, double chi, bool ms_i, bool ms_j,
                                const double *finv_i, const double *finv_j, double h_i, double h_j,
-                               bool damping, MCALinkTangent &t)
+                               bool damping, bool friction, MCALinkTangent &t)
   {
     const double sign = i_is_lo ? 1.0 : -1.0;
     for (int k = 0; k < 3; k++) t.n[k] = sign * row[H_NPREV + k];
@@ -111,9 +113,12 @@ namespace MCAKernels {
     t.inv_ct = 1.0 / ct;
     const int state = static_cast<int>(row[H_STATE]);
     t.linked = (state == LINK_LINKED);
-    if (state == LINK_BROKEN) {
+    if (state == LINK_BROKEN || state == LINK_CONTACT) {
       // pushing: the virtual halves' normal traction is compressive
-      if (row[H_LO + HALF_SIG] + row[H_HI + HALF_SIG] < 0.0) t.kn = area / cn;
+      if (row[H_LO + HALF_SIG] + row[H_HI + HALF_SIG] < 0.0) {
+        t.kn = area / cn;
+        if (friction) t.kt = area / ct;
+      }
       return;
     }
     if (state != LINK_LINKED) return;

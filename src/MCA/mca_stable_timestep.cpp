@@ -250,7 +250,8 @@ void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j, MCALin
   const bool ilo = d.tag(i) < d.tag(j);
   const double chi = face_moment_factor(in.packing[ilo ? i : j]);
   link_tangent(row, ilo, in.material[in.type[i]], in.material[in.type[j]], chi, predicted[i] > 0.0,
-               predicted[j] > 0.0, finv[i], finv[j], hpred[i], hpred[j], in.damping, t);
+               predicted[j] > 0.0, finv[i], finv[j], hpred[i], hpred[j], in.damping, in.friction,
+               t);
 }
 
 // a link between two local automata is counted by the lower ID; one to a

@@ -52,6 +52,7 @@ class MCAStableTimestep : protected Pointers {
     const double *rmass, *inertia;
     const MCAKernels::MCAMaterial *material;    // by type
     bool damping;                               // the link model has viscous damping
+    bool friction;                              // and friction (contacts coulomb)
   };
 
   struct Result {

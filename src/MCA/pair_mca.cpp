@@ -32,11 +32,15 @@
 #include "mca_compat.h"
 #include "mca_link_passes.h"
 #include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
 
 #include <cmath>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace MCAKernels;
@@ -50,6 +54,10 @@ static constexpr double RESTART_NAMED_PARTS = -3.0;
 static constexpr double RESTART_HARDENING = -4.0;
 // then the fracture rules after the linking rules
 static constexpr double RESTART_FRACTURE = -5.0;
+// then the friction of the type pairs
+static constexpr double RESTART_CONTACTS = -6.0;
+// the id of the contact neighbor list among the pair style's requests
+static constexpr int CONTACT_LIST_ID = 1;
 
 PairMCA::HostData PairMCA::host_data()
 {
@@ -78,6 +86,7 @@ PairMCA::HostData PairMCA::host_data()
   d.return_smean_ = return_smean;
   d.break_rules_ = break_rules.data();
   d.break_stride = atom->ntypes + 1;
+  d.contact_rules_ = contact_rules.data();
   d.damage_ = avec->damage;
   return d;
 }
@@ -88,8 +97,8 @@ PairMCA::PairMCA(LAMMPS *lmp) :
     PairMCALinked(lmp, "Pair mca"), materials(lmp), link_allowed(nullptr), link_tolerance(nullptr),
     link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr), smean_pred(nullptr),
     predictor_sums(nullptr), bmat(nullptr), return_scale(nullptr), return_smean(nullptr),
-    avec(nullptr), stability(nullptr), dt_monitor(), dt_estimated(0), dt_warned_ratio(0.0),
-    links_changed(0)
+    avec(nullptr), contact_list(nullptr), restart_contacts(0), stability(nullptr), dt_monitor(),
+    dt_estimated(0), dt_warned_ratio(0.0), links_changed(0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -141,6 +150,8 @@ void PairMCA::allocate()
   memory->create(link_tolerance, n, n, "pair:link_tolerance");
   materials.allocate(atom->ntypes);
   break_rules.assign(n * n, MCABreakRule{BREAK_NONE, 0.0, 0.0});
+  contact_rules.assign(n * n, MCAContactRule{0.0});
+  friction_given.assign(n * n, 0);
   for (int i = 0; i < n; i++) {
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
@@ -224,6 +235,11 @@ bool PairMCA::fractured() const
   return model.layout().link_offset[PART_FRACTURE] >= 0;
 }
 
+bool PairMCA::contacts() const
+{
+  return model.layout().link_offset[PART_CONTACT] >= 0;
+}
+
 // a parameter without its part of the link law, or a part without its
 // parameter, is most likely a mistake of the input: say so
 void PairMCA::check_parts()
@@ -234,7 +250,13 @@ void PairMCA::check_parts()
   const bool any_yield = materials.any_plastic();
   bool any_break = false;
   for (const auto &rule : break_rules) any_break = any_break || rule.criterion != BREAK_NONE;
+  bool any_friction = false;
+  for (int given : friction_given) any_friction = any_friction || given;
   if (comm->me != 0) return;
+  if (!contacts() && any_friction)
+    error->warning(FLERR,
+                   "Pair mca: friction is given but the link model has no contact part: add "
+                   "'contacts coulomb' to pair_style mca to use it");
   if (fractured() && !any_break)
     error->warning(FLERR,
                    "Pair mca: fracture links without a break criterion for any pair of atom "
@@ -302,6 +324,7 @@ void PairMCA::coeff(int narg, char **arg)
 
   MCAMaterials::Input material;
   double tol = -1.0;
+  double friction = -1.0;
   int link = -1;
   int iarg = 2;
   while (iarg < narg) {
@@ -329,9 +352,15 @@ void PairMCA::coeff(int narg, char **arg)
       tol = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (tol < 0.0 || tol >= 0.5)
         error->all(FLERR, "Pair mca: link tolerance must be in [0, 0.5), got {}", tol);
+    } else if (key == "friction") {
+      friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(friction >= 0.0 && friction < 1.0e300))
+        error->all(FLERR, "Pair mca: friction (Coulomb coefficient mu) must be >= 0, got {}",
+                   arg[iarg + 1]);
     } else {
       error->all(FLERR,
-                 "Unknown pair_coeff keyword {} for pair mca (allowed: {} link tolerance break)",
+                 "Unknown pair_coeff keyword {} for pair mca (allowed: {} link tolerance break "
+                 "friction)",
                  key, materials.keyword_list());
     }
     iarg += 2;
@@ -348,8 +377,13 @@ void PairMCA::coeff(int narg, char **arg)
   }
 
   int count = 0;
+  const int n = atom->ntypes + 1;
   for (int i = ilo; i <= ihi; i++) {
     for (int j = MAX(jlo, i); j <= jhi; j++) {
+      if (friction >= 0.0) {
+        contact_rules[i * n + j].mu = contact_rules[j * n + i].mu = friction;
+        friction_given[i * n + j] = friction_given[j * n + i] = 1;
+      }
       if (link >= 0) link_allowed[i][j] = link_allowed[j][i] = link;
       if (tol >= 0.0) link_tolerance[i][j] = link_tolerance[j][i] = tol;
       setflag[i][j] = 1;
@@ -445,6 +479,59 @@ void PairMCA::init_style()
     cut_global = 2.0 * rmaxall * (1.0 + tolmax) + 0.5 * rmaxall;
     if (cut_global <= 0.0) cut_global = 1.0;    // no atoms yet
   }
+
+  if (contacts()) init_contacts();
+}
+
+/* ----------------------------------------------------------------------
+   contacts: friction of the mixed type pairs, the settings that let every
+   contact be seen, their neighbor list and the fix that keeps it current
+   when the box moves (FixMCARebuild)
+------------------------------------------------------------------------- */
+
+void PairMCA::init_contacts()
+{
+  mix_friction();
+  // a contact row exists for every pair that can touch before the next
+  // reneighboring only if the lists are rebuilt as soon as an automaton
+  // moved half the skin
+  if (neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check)
+    error->all(FLERR,
+               "Pair mca contacts need the neighbor lists rebuilt as soon as an automaton has "
+               "moved half the skin: use 'neigh_modify delay 0 every 1 check yes' (now delay {} "
+               "every {} check {})",
+               neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
+  double rmax = 0.0, rmaxall = 0.0;
+  for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
+  MPI_Allreduce(&rmax, &rmaxall, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (cut_global < 2.0 * rmaxall)
+    error->all(FLERR,
+               "Pair mca: contacts need a cutoff of at least the largest touch distance 2 R_max = "
+               "{}; pair_style mca cutoff is {}",
+               2.0 * rmaxall, cut_global);
+  MCACompat::request_full_list(neighbor, this, instance_me, CONTACT_LIST_ID);
+  if (!MCACompat::fix_by_id(modify, "MCA_REBUILD")) modify->add_fix("MCA_REBUILD all MCA_REBUILD");
+}
+
+// a type pair without its own friction takes the geometric mean of the
+// two types' own (0 if either is frictionless)
+void PairMCA::mix_friction()
+{
+  const int n = atom->ntypes + 1;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i + 1; j <= atom->ntypes; j++) {
+      if (friction_given[i * n + j]) continue;
+      const double mu = sqrt(contact_rules[i * n + i].mu * contact_rules[j * n + j].mu);
+      contact_rules[i * n + j].mu = contact_rules[j * n + i].mu = mu;
+    }
+}
+
+void PairMCA::init_list(int id, NeighList *ptr)
+{
+  if (id == CONTACT_LIST_ID)
+    contact_list = ptr;
+  else
+    Pair::init_list(id, ptr);
 }
 
 /* ----------------------------------------------------------------------
@@ -509,6 +596,7 @@ MCAStableTimestep::Input PairMCA::stability_input()
   in.inertia = avec->inertia;
   in.material = materials.type;
   in.damping = model.layout().link_offset[PART_DAMPING] >= 0;
+  in.friction = contacts();
   return in;
 }
 
@@ -678,6 +766,19 @@ bool PairMCA::linkable(int i, int j)
 // a new link: stress-free at the present positions
 void PairMCA::init_link_row(int i, int j, double *h)
 {
+  init_pair_row(i, j, LINK_LINKED, h);
+}
+
+// a new contact: its reference length is the touch distance R_lo + R_hi;
+// its halves at rest (one found already closer starts stress-free where
+// it is, as a link does)
+void PairMCA::init_contact_row(int i, int j, double *h)
+{
+  init_pair_row(i, j, LINK_CONTACT, h);
+}
+
+void PairMCA::init_pair_row(int i, int j, int state, double *h)
+{
   const tagint *tag = atom->tag;
   const double *radius = atom->radius;
   const int *packing = avec->packing;
@@ -686,10 +787,16 @@ void PairMCA::init_link_row(int i, int j, double *h)
   const int lo = ilo ? i : j, hi = ilo ? j : i;
   const double del[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
   const double r = sqrt(dot3(del, del));
-  h[H_STATE] = LINK_LINKED;
-  h[H_R0] = r;
-  h[H_Q0LO] = r * radius[lo] / (radius[lo] + radius[hi]);
-  h[H_Q0HI] = r * radius[hi] / (radius[lo] + radius[hi]);
+  h[H_STATE] = state;
+  if (state == LINK_CONTACT) {
+    h[H_R0] = radius[lo] + radius[hi];
+    h[H_Q0LO] = radius[lo];
+    h[H_Q0HI] = radius[hi];
+  } else {
+    h[H_R0] = r;
+    h[H_Q0LO] = r * radius[lo] / (radius[lo] + radius[hi]);
+    h[H_Q0HI] = r * radius[hi] / (radius[lo] + radius[hi]);
+  }
   h[H_A0] = 0.5 *
       (face_area(packing[lo], radius[lo], avec->volume[lo]) +
        face_area(packing[hi], radius[hi], avec->volume[hi]));
@@ -776,6 +883,7 @@ void PairMCA::compute(int eflag, int vflag)
   // change only when the partners are found again, or when links broke at
   // the last step (on any processor)
   if (fractured() && partners_outdated()) forget_broken_links();
+  if (contacts() && neighbor->ago == 0) update_contacts();
   if (refresh_partners() || links_broke) count_links();
   links_broke = 0;
   if (neighbor->ago == 0)
@@ -820,9 +928,11 @@ void PairMCA::compute(int eflag, int vflag)
     for (int i = 0; i < d.nlocal; i++)
       link_pass_of<LAW_PLASTIC_SETUP>(d, sums, tally, p, i, totals);
   }
-  // broken pairs: their compressive force only
+  // broken pairs: their compressive force (and friction) only
   if (fractured())
-    for (int i = 0; i < d.nlocal; i++) broken_pass_of(d, sums, tally, p, i, totals);
+    for (int i = 0; i < d.nlocal; i++) pushing_pass_of<LINK_BROKEN>(d, sums, tally, p, i, totals);
+  if (contacts())
+    for (int i = 0; i < d.nlocal; i++) pushing_pass_of<LINK_CONTACT>(d, sums, tally, p, i, totals);
   if (p.commit && lazy) partner_rows_stale = 1;
 
   for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, bmat[i], p.commit);
@@ -854,6 +964,120 @@ void PairMCA::compute(int eflag, int vflag)
 
   nstretched = totals.nlong;
   if (neighbor->ago == 0) stretched_warning();
+}
+
+/* ----------------------------------------------------------------------
+   contacts (mca_contact.h): at each reneighboring, with the contact
+   neighbor list just built, before the partners are found again.  A pair
+   within reach, closer than R_i + R_j + skin, can touch before the next
+   reneighboring (no automaton moves more than half the skin before it);
+   every unlinked pair within reach has a contact row in both automata's
+   tables, and a contact row of a pair beyond reach goes.  Both owners
+   decide from the same distance (a pair that could be decided differently
+   on two ranks, at the edge of reach, is a skin apart and at rest).  A
+   dropped row leaves what it held to the law state of each automaton:
+   the energy its friction dissipated and the rest of the work of its
+   forces.  The table grows when an automaton needs more rows (to the
+   largest need over the ranks; pair_style mca capacity caps it)
+------------------------------------------------------------------------- */
+
+void PairMCA::update_contacts()
+{
+  if (!contact_list) error->all(FLERR, "Pair mca: contacts without their neighbor list");
+  links->sync_rows();
+  links->to_host();
+  const int ca = model.layout().atom_offset[PART_CONTACT];
+  const int cf = model.layout().link_offset[PART_CONTACT];
+  const int row_size = links->row_size;
+  const double skin = neighbor->skin;
+  const double *radius = atom->radius;
+  const tagint *tag = atom->tag;
+  double **x = atom->x;
+  const int nlocal = atom->nlocal;
+  auto distsq = [x](int i, int j) {
+    const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
+    return dx * dx + dy * dy + dz * dz;
+  };
+  bool changed = false;
+
+  // contacts beyond reach go (the last row takes the place of one)
+  for (int i = 0; i < nlocal; i++) {
+    int &n = links->nlinks[i];
+    double *state = links->atom_state[i];
+    for (int m = n - 1; m >= 0; m--) {
+      double *row = &links->history[i][m * row_size];
+      if (static_cast<int>(row[H_STATE]) != LINK_CONTACT) continue;
+      const int j = atom->map(links->partner[i][m]);
+      if (j >= 0) {
+        const double reach = row[H_R0] + skin;
+        if (distsq(i, domain->closest_image(i, j)) < reach * reach) continue;
+      }
+      state[ca + CA_FRICTION] += row[cf + C_FRICTION];
+      state[ca + CA_WORK] += row[H_WORK] - row[cf + C_FRICTION];
+      state[ca + CA_DROPPED] += 1.0;
+      links->remove_row(i, m);
+      changed = true;
+    }
+  }
+
+  // the unlinked pairs within reach that have no row yet
+  std::vector<std::pair<int, int>> found;
+  int most = 0;
+  tagint worst = 0;
+  const int inum = contact_list->inum;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = contact_list->ilist[ii];
+    const int *jlist = contact_list->firstneigh[i];
+    int rows = links->nlinks[i];
+    for (int jj = 0; jj < contact_list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double reach = radius[i] + radius[j] + skin;
+      if (distsq(i, j) >= reach * reach) continue;
+      bool known = false;
+      for (int m = 0; m < links->nlinks[i] && !known; m++) known = links->partner[i][m] == tag[j];
+      if (known) continue;
+      found.emplace_back(i, j);
+      rows++;
+    }
+    if (rows > most) {
+      most = rows;
+      worst = tag[i];
+    }
+  }
+  int most_all = 0;
+  MPI_Allreduce(&most, &most_all, 1, MPI_INT, MPI_MAX, world);
+  if (most_all > links->maxlinks) {
+    if (capacity_user > 0) {
+      tagint worst_local = (most == most_all) ? worst : MAXTAGINT, worst_all;
+      MPI_Allreduce(&worst_local, &worst_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+      error->all(FLERR,
+                 "Pair mca: automaton {} has {} links and contacts at step {}, more than the "
+                 "capacity {} (pair_style mca capacity); raise the capacity or leave it out "
+                 "(the tables then grow as needed)",
+                 worst_all, most_all, update->ntimestep, capacity_user);
+    }
+    // room for a few more, so that the tables seldom grow
+    links->set_capacity(most_all + 4);
+  }
+  for (const auto &p : found) {
+    const int i = p.first, j = p.second;
+    int &n = links->nlinks[i];
+    // (two images of one partner within reach: one row, the first image's)
+    bool known = false;
+    for (int m = 0; m < n && !known; m++) known = links->partner[i][m] == tag[j];
+    if (known) continue;
+    double *row = &links->history[i][n * row_size];
+    for (int k = 0; k < row_size; k++) row[k] = 0.0;
+    init_contact_row(i, j, row);
+    links->partner[i][n] = tag[j];
+    n++;
+  }
+  int changed_any = (changed || !found.empty()) ? 1 : 0;
+  if (changed_any) {
+    links->host_changed();
+    cache_nlocal = -1;
+    links_changed = 1;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -920,14 +1144,7 @@ void PairMCA::forget_broken_links()
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
       if (cause > BREAK_NONE && cause < NBREAK) state[fa + FA_FORGOTTEN + cause - 1] += 1.0;
       state[fa + FA_RELEASED] += row[ff + F_RELEASED];
-      // the last row takes its place
-      const int last = n - 1;
-      if (m != last) {
-        links->partner[i][m] = links->partner[i][last];
-        const double *from = &links->history[i][last * row_size];
-        for (int k = 0; k < row_size; k++) row[k] = from[k];
-      }
-      n--;
+      links->remove_row(i, m);
       changed = true;
     }
   }
@@ -1022,6 +1239,12 @@ void PairMCA::write_restart(FILE *fp)
       fwrite(&rule.p1, sizeof(double), 1, fp);
       fwrite(&rule.p2, sizeof(double), 1, fp);
     }
+  // friction of the type pairs
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&contact_rules[i * n + j].mu, sizeof(double), 1, fp);
+      fwrite(&friction_given[i * n + j], sizeof(int), 1, fp);
+    }
 }
 
 /* ----------------------------------------------------------------------
@@ -1079,13 +1302,27 @@ void PairMCA::read_restart(FILE *fp)
       MPI_Bcast(&rule.p2, 1, MPI_DOUBLE, 0, world);
       break_rules[i * n + j] = break_rules[j * n + i] = rule;
     }
+  if (!restart_contacts) return;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      double mu = 0.0;
+      int given = 0;
+      if (me == 0) {
+        utils::sfread(FLERR, &mu, sizeof(double), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &given, sizeof(int), 1, fp, nullptr, error);
+      }
+      MPI_Bcast(&mu, 1, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&given, 1, MPI_INT, 0, world);
+      contact_rules[i * n + j].mu = contact_rules[j * n + i].mu = mu;
+      friction_given[i * n + j] = friction_given[j * n + i] = given;
+    }
 }
 
 /* ---------------------------------------------------------------------- */
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
-  fwrite(&RESTART_FRACTURE, sizeof(double), 1, fp);
+  fwrite(&RESTART_CONTACTS, sizeof(double), 1, fp);
   fwrite(&tolerance_default, sizeof(double), 1, fp);
   fwrite(&cutoff_user, sizeof(double), 1, fp);
   fwrite(&capacity_user, sizeof(int), 1, fp);
@@ -1103,7 +1340,8 @@ void PairMCA::read_restart_settings(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  restart_fracture = (first == RESTART_FRACTURE);
+  restart_contacts = (first == RESTART_CONTACTS);
+  restart_fracture = restart_contacts || (first == RESTART_FRACTURE);
   restart_tables = restart_fracture || (first == RESTART_HARDENING);
   const bool named_parts = restart_tables || (first == RESTART_NAMED_PARTS);
   restart_named = named_parts || (first == RESTART_NAMED_MATERIALS);

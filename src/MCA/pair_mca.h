@@ -73,6 +73,11 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   double break_scatter;
   int break_seed;
 
+  // contacts: the friction of each type pair ((ntypes + 1)^2, symmetric)
+  // and whether pair_coeff gave it (else mixed from the types' own)
+  std::vector<MCAKernels::MCAContactRule> contact_rules;
+  std::vector<int> friction_given;
+
   double tolerance_default;    // relative distance tolerance for links
   double cutoff_user;          // pair cutoff given by the user, else < 0
 
@@ -103,6 +108,9 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   void grow_peratom();
   bool linkable(int i, int j) override;
   void init_link_row(int i, int j, double *row) override;
+  void init_contact_row(int i, int j, double *row);
+  void init_pair_row(int i, int j, int state, double *row);
+  void init_contacts();
   void count_links();
   void set_masses();
   static const char *link_slot(const char *keyword);
@@ -110,6 +118,16 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   void check_parts();
   bool plastic() const;
   bool fractured() const;
+  bool contacts() const;
+  // contacts: the friction of the type pairs pair_coeff left unset (mixed)
+  void mix_friction();
+  // at reneighboring, before the partners are found again: drop the
+  // contact rows of pairs that moved apart beyond reach, add one for every
+  // unlinked pair within reach (from the contact neighbor list)
+  void update_contacts();
+  class NeighList *contact_list;
+  void init_list(int, class NeighList *) override;
+  int restart_contacts;    // the restart file being read holds contact rules
   void parse_break(int ilo, int ihi, int jlo, int jhi, int narg, char **arg, int &iarg);
   // drop broken pairs farther apart than the cutoff from the link tables
   // (at reneighboring, before the partners are found again)

@@ -37,6 +37,8 @@ struct PairMCA::HostData : MCAHostLinks {
   // fracture: rules by type pair (row stride ntypes + 1), damage
   const MCAKernels::MCABreakRule *break_rules_;
   int break_stride;
+  // contacts: rules by type pair (the same stride)
+  const MCAKernels::MCAContactRule *contact_rules_;
   double *damage_;
 
   double x(int i, int k) const { return x_[i][k]; }
@@ -61,6 +63,10 @@ struct PairMCA::HostData : MCAHostLinks {
   double volume(int i) const { return volume_[i]; }
   double &return_scale(int i) const { return return_scale_[i]; }
   double &return_smean(int i) const { return return_smean_[i]; }
+  const MCAKernels::MCAContactRule &contact_rule(int ti, int tj) const
+  {
+    return contact_rules_[ti * break_stride + tj];
+  }
   const MCAKernels::MCABreakRule &break_rule(int ti, int tj) const
   {
     return break_rules_[ti * break_stride + tj];

@@ -109,7 +109,8 @@ def stress_vector(text):
 
 @pytest.mark.parametrize("newton", ["on", "off"])
 @pytest.mark.parametrize("name", ["atomic-pair-mca", "atomic-pair-mca_damping",
-                                  "atomic-pair-mca_plasticity", "atomic-pair-mca_fracture"])
+                                  "atomic-pair-mca_plasticity", "atomic-pair-mca_fracture",
+                                  "atomic-pair-mca_contacts"])
 def test_pair_mca_kk_yaml(tmp_path, newton, name):
     build = kokkos_build()
     config = yaml.safe_load((TESTS / f"{name}.yaml").read_text())

@@ -1,0 +1,478 @@
+"""Contacts with Coulomb friction between unlinked automata ("pair_style mca
+contacts coulomb", pair_coeff keyword friction; doc/src/pair_mca.rst,
+"Contacts").
+
+* sliding block (validation 3 of the issue): a block of linked automata
+  pressed onto a plane of other automata (not linked to it) and dragged
+  along it: once it slides, the friction force on the plane is mu times
+  the normal force within 1 % (mu = 0.3; and 0 for mu = 0), and every
+  contact that slides has |t| = mu |sigma| to round-off;
+* stick: a tangential force below mu N never lets a contact slip: friction
+  dissipates exactly nothing and the block does not creep;
+* oblique impact of a free cube on a free plate: contacts are made when
+  the bodies come within reach and dropped after they part; kinetic
+  (translation and spin) + elastic + friction energy stays constant to the
+  integrator's error while friction takes a large share; the same run on
+  2 MPI ranks, with the kk styles on 1 and 2 threads and across a restart
+  file written while the bodies touch gives the same trajectory;
+* a box compressed by fix deform brings two automata into contact: the
+  kk styles rebuild their neighbor lists as the CPU styles do (LAMMPS's
+  Kokkos check alone never rebuilds when the box moved more than the
+  skin) and see the contact;
+* bad input gives errors that name the argument and the allowed values.
+"""
+
+import pathlib
+
+import numpy as np
+import pytest
+
+from mcatest import kokkos_args, read_dump, read_thermo
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+
+R = 1.0e-3          # m, radius of the automata (sc packing, spacing 2R)
+E, NU = 70.0e9, 0.3
+G = E / (2.0 * (1.0 + NU))
+DT = 5.0e-8         # s; the stable time step of these scenes is about 2e-7 s
+
+# a 3 x 3 x 2 block (type 2) on a 5 x 5 plane (type 1), not linked to it,
+# pressed by its top layer and dragged along x at speed v (ramped); the
+# plane is held.  Normal traction about 7 MPa: the contacts stick over a
+# slip of mu sigma c_t ~ 8e-8 m and then slide over the rest of 2e-6 m
+BLOCK = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+lattice         sc {spacing}
+region          box block -2 7 -2 7 -2 6
+create_box      2 box
+region          plane block -0.5 4.5 -0.5 4.5 -0.5 0.5
+region          block block 0.5 3.5 0.5 3.5 0.5 2.5
+create_atoms    1 region plane
+create_atoms    2 region block
+mca_set         all packing sc radius {radius}
+group           plane type 1
+group           block type 2
+region          top block INF INF INF INF 1.5 INF
+group           top region top
+comm_modify     vel yes
+neighbor        {skin} bin
+neigh_modify    delay 0 every 1 check yes
+pair_style      mca contacts coulomb
+pair_coeff      * * E {E} nu {nu} rho 2700 friction {mu}
+pair_coeff      1 2 link no
+fix             nve all nve/mca
+fix             plane plane mca/setvelocity 0 0 0
+fix             load top addforce 0 0 -{load}
+fix             damp block mca/damping 2e5
+variable        vx equal {v}*(1.0-exp(-(((step-{settle})*dt/{ramp})^2)))*(step>{settle})
+fix             drag block mca/setvelocity v_vx 0 NULL
+timestep        {dt}
+compute         L all mca/link state normal shear friction
+compute         F all reduce sum c_L[4]{inputs}
+thermo_style    custom step f_plane[1] f_plane[3] f_drag[1] c_F
+thermo_modify   format float %.17g
+thermo          20
+run             {settle}
+dump            d all local {nslide} contacts.dump c_L[1] c_L[2] c_L[3]
+dump_modify     d format float %.17g
+run             {nslide}
+"""
+SLIDE_V = 0.02        # m/s
+SLIDE_STEPS = 2000    # slide of v (t - ramp) ~ 1.9e-6 m = 1e-3 of 2R
+LOAD = 28.0           # N per automaton of the top layer: sigma ~ 7 MPa
+
+
+def local_inputs(build):
+    """compute reduce of local values: LAMMPS 2021 takes them as they come,
+    later versions want 'inputs local'."""
+    return "" if build.name == "kokkos" else " inputs local"
+
+
+def sliding_block(build, directory, mu, extra_args=(), nprocs=1):
+    script = BLOCK.format(spacing=2 * R, radius=R, skin=0.2 * R, E=E, nu=NU, mu=mu, load=LOAD,
+                          v=SLIDE_V, ramp=2.0e-5, settle=1000, dt=DT, nslide=SLIDE_STEPS,
+                          inputs=local_inputs(build))
+    build.run(script, directory, nprocs=nprocs, extra_args=extra_args)
+    return read_thermo(directory / "log.lammps")
+
+
+@pytest.mark.parametrize("mu", [0.3, 0.0])
+def test_sliding_block(build, tmp_path, mu):
+    thermo = sliding_block(build, tmp_path, mu)
+    step = np.asarray(thermo["Step"])
+    fx = np.asarray(thermo["f_plane[1]"])
+    fz = np.asarray(thermo["f_plane[3]"])
+    friction = np.asarray(thermo["c_F"])
+    # the normal force on the plane is the load (the block pushes it down)
+    normal = -fz
+    settled = step == 1000
+    # (to the ringing the damping leaves after 1000 steps)
+    assert abs(normal[settled][0] - 9 * LOAD) < 1e-2 * 9 * LOAD
+    # sliding: from the second half of the slide on (the stick phase ends
+    # after ~ 4 % of it).  The contact normals tilt by the slide over the
+    # diameter, d / 2R <= 1e-3, which adds -d/2R (1 + mu^2) to the ratio
+    sliding = step >= 1000 + SLIDE_STEPS // 2
+    ratio = fx[sliding] / normal[sliding]
+    tilt = SLIDE_V * SLIDE_STEPS * DT / (2 * R)
+    print(f"\nmu {mu}: F_x / N over the slide {ratio.min():.6f} .. {ratio.max():.6f} "
+          f"(normal force {normal[sliding].mean():.4f} N, contact tilt <= {tilt:.1e}), "
+          f"friction energy {friction[-1]:.4e} J")
+    if mu > 0:
+        assert np.abs(ratio / mu - 1.0).max() < 0.01
+        # what friction dissipated while sliding is the work of the friction
+        # force over the slip, v dt per step (the contacts' tangential
+        # springs hold a constant energy): sampled every 20 steps, the sum
+        # of F v dt is within the change of F over one sample of it
+        work = np.sum(0.5 * (fx[sliding][1:] + fx[sliding][:-1])) * 20 * SLIDE_V * DT
+        gained = friction[sliding][-1] - friction[sliding][0]
+        print(f"friction energy over the slide {gained:.6e} J, work of F_x {work:.6e} J")
+        assert abs(gained / work - 1.0) < 0.01
+    else:
+        assert np.abs(ratio).max() < 1.5 * tilt * (1 + mu * mu)
+        assert friction[-1] == 0.0
+    # every contact that pushes slides at the cap: |t| = mu |sigma|
+    rows = read_dump(tmp_path / "contacts.dump")[-1]
+    state, normal_traction, shear = (rows[f"c_L[{k}]"] for k in (1, 2, 3))
+    pushing = (state == 3) & (normal_traction < 0)
+    assert pushing.sum() == 9
+    assert np.abs(shear[pushing] - mu * np.abs(normal_traction[pushing])).max() < \
+        1e-12 * np.abs(normal_traction[pushing]).max()
+
+
+def test_stick_below_threshold(build, tmp_path):
+    """A tangential force of 0.3 mu N on the block automata, ramped in once
+    the load has settled, with the block free along x: no contact ever
+    reaches the cap, so
+    friction dissipates exactly nothing, and once the damping has settled
+    the block it stays where it is (no creep)."""
+    mu = 0.3
+    script = BLOCK.format(spacing=2 * R, radius=R, skin=0.2 * R, E=E, nu=NU, mu=mu, load=LOAD,
+                          v=0.0, ramp=1.0, settle=1000, dt=DT, nslide=4000,
+                          inputs=local_inputs(build))
+    # the drag holds y only; a ramped force along x pulls every automaton
+    push = 0.3 * mu * 9 * LOAD / 18
+    script = script.replace("fix             drag block mca/setvelocity v_vx 0 NULL",
+                            "fix             drag block mca/setvelocity NULL 0 NULL\n"
+                            f"variable        fx equal {push}*(1.0-exp(-(((step-1000)*dt/2e-5)^2)))*(step>1000)\n"
+                            "fix             push block addforce v_fx 0 0\n"
+                            "compute         xb block com")
+    script = script.replace("thermo_style    custom step f_plane[1] f_plane[3] f_drag[1] c_F",
+                            "thermo_style    custom step f_plane[1] f_plane[3] c_xb[1] c_F")
+    build.run(script, tmp_path)
+    thermo = read_thermo(tmp_path / "log.lammps")
+    x = np.asarray(thermo["c_xb[1]"])
+    friction = np.asarray(thermo["c_F"])
+    fx = np.asarray(thermo["f_plane[1]"])
+    step = np.asarray(thermo["Step"])
+    late = step >= 4000
+    shift = x[-1] - x[0]
+    drift = np.abs(x[late] - x[late][-1]).max()
+    print(f"\nstick: tangential force {18 * push:.3f} N = 0.3 mu N; block moved {shift:.4e} m, "
+          f"then stays within {drift:.2e} m over the last 1000 steps; friction energy "
+          f"{friction[0]:.6e} J at the settling (the block's Poisson expansion slips the "
+          f"contacts while they load), {friction[-1]:.6e} J at the end")
+    # not one slip once the tangential force acts (bit for bit)
+    assert np.all(friction == friction[0])
+    # the plane carries the whole tangential force once settled
+    assert abs(fx[-1] / (18 * push) - 1.0) < 1e-3
+    # the block moved elastically (the contacts' tangential springs) and
+    # then stays put: its centre moves by less than 1e-3 of that shift over
+    # the last 1000 steps (the ringing, damped by e^-15 by then; no creep)
+    assert shift > 0
+    assert drift < 1e-3 * shift
+
+
+# a cube (3 x 3 x 3, type 2) thrown obliquely at a plate (6 x 6 x 2, type
+# 1), both free; they are 0.5 R apart (beyond reach, 0.2 R: the contacts
+# are made on the way, after ~ 1000 steps); the restart case writes a
+# restart file while they touch
+IMPACT = """
+units           si
+atom_style      mca
+atom_modify     map array sort 0 0
+boundary        f f f
+lattice         sc {spacing}
+region          box block -3 9 -3 9 -2 9
+create_box      2 box
+region          plate block -0.5 5.5 -0.5 5.5 -0.5 1.5
+region          cube block 1.5 4.5 1.5 4.5 2.75 5.25
+create_atoms    1 region plate
+create_atoms    2 region cube
+mca_set         all packing sc radius {radius}
+group           plate type 1
+group           cube type 2
+displace_atoms  cube move 0 0 {drop} units box
+velocity        cube set 3.0 1.0 -10.0 units box
+comm_modify     vel yes
+neighbor        {skin} bin
+neigh_modify    delay 0 every 1 check yes
+pair_style      mca contacts coulomb
+pair_coeff      * * E {E} nu {nu} rho 2700 friction 0.3
+pair_coeff      1 2 link no
+fix             nve all nve/mca
+timestep        {dt}
+"""
+IMPACT_OUTPUT = """
+compute         p all property/atom inertia omegax omegay omegaz
+variable        erot atom 0.5*c_p[1]*(c_p[2]^2+c_p[3]^2+c_p[4]^2)
+compute         erot all reduce sum v_erot
+compute         a all mca/atom friction contact_work contacts
+compute         A all reduce sum c_a[1] c_a[2] c_a[3]
+variable        etot equal ke+c_erot+pe+c_A[1]+c_A[2]
+thermo_style    custom step ke c_erot pe c_A[1] c_A[2] c_A[3] v_etot
+thermo_modify   format float %.17g
+thermo          10
+dump            d all custom 100 impact.dump id x y z vx vy vz omegax omegay omegaz
+dump_modify     d format float %.17g sort id
+"""
+IMPACT_STEPS = 2400
+
+
+def impact(build, directory, nprocs=1, extra_args=(), split_at=None, restart=False):
+    """The run, or two runs split at step split_at in memory or (restart)
+    through a restart file (the second run dumps to impact2.dump)."""
+    script = IMPACT.format(spacing=2 * R, radius=R, skin=0.2 * R, E=E, nu=NU, dt=DT, drop=-1.5 * R)
+    second = IMPACT_OUTPUT.replace("dump            d all custom 100 impact.dump",
+                                   "dump            d all custom 100 impact2.dump")
+    if split_at is None:
+        script += IMPACT_OUTPUT + f"run {IMPACT_STEPS}\n"
+    elif not restart:
+        dump = "\n".join(line for line in second.splitlines() if line.startswith("dump"))
+        script += (IMPACT_OUTPUT + f"run {split_at}\nundump d\n" + dump
+                   + f"\nrun {IMPACT_STEPS - split_at}\n")
+    else:
+        script += (IMPACT_OUTPUT + f"run {split_at}\nwrite_restart impact.restart\nclear\n"
+                   "atom_modify map array sort 0 0\nread_restart impact.restart\n"
+                   "comm_modify vel yes\nneighbor {skin} bin\n"
+                   "neigh_modify delay 0 every 1 check yes\n"
+                   "fix nve all nve/mca\ntimestep {dt}\n".format(skin=0.2 * R, dt=DT)
+                   + second + f"run {IMPACT_STEPS - split_at}\n")
+    build.run(script, directory, nprocs=nprocs, extra_args=extra_args)
+    return read_thermo(directory / "log.lammps")
+
+
+def test_impact_energy_balance(build, tmp_path):
+    thermo = impact(build, tmp_path)
+    total = np.asarray(thermo["v_etot"])
+    friction = np.asarray(thermo["c_A[1]"])
+    dropped = np.asarray(thermo["c_A[2]"])
+    touching = np.asarray(thermo["c_A[3]"])
+    e0 = total[0]
+    error = np.abs(total - e0).max() / e0
+    print(f"\nimpact: friction dissipated {friction[-1] / e0:.4f} of the energy, contacts "
+          f"touching at most {touching.max():.0f}, at the end {touching[-1]:.0f}; work left by "
+          f"dropped contacts {dropped[-1]:.3e} J ({dropped[-1] / e0:.2e}); balance error "
+          f"{error:.2e}")
+    assert touching.max() > 0 and touching[-1] == 0    # they touched, then parted
+    assert friction[-1] > 0.01 * e0
+    assert error < 2e-3
+
+
+def final_state(directory, name="impact.dump", by_position=True):
+    """Positions, velocities and spins of the last snapshot of a dump, the
+    automata in the order of their positions in the first (create_atoms
+    numbers them differently on different numbers of ranks), or of their
+    IDs."""
+    snaps = read_dump(directory / name)
+    first, snap = snaps[0], snaps[-1]
+    order = np.arange(len(snap["id"]))
+    if by_position:
+        order = np.lexsort(np.round(np.column_stack([first[c] for c in ("z", "y", "x")]) / R,
+                                    3).T)
+    return np.column_stack([snap[c][order] for c in ("x", "y", "z", "vx", "vy", "vz", "omegax",
+                                                     "omegay", "omegaz")])
+
+
+def state_difference(a, b):
+    """Largest difference of positions (relative to the spacing 2R) and of
+    velocities and spins (relative to their largest value)."""
+    dx = np.abs(a[:, :3] - b[:, :3]).max() / (2 * R)
+    dv = np.abs(a[:, 3:6] - b[:, 3:6]).max() / np.abs(b[:, 3:6]).max()
+    dw = np.abs(a[:, 6:] - b[:, 6:]).max() / np.abs(b[:, 6:]).max()
+    return max(dx, dv, dw)
+
+
+@pytest.fixture(scope="module")
+def impact_reference(tmp_path_factory):
+    """The oblique impact on one rank with the CPU styles of the current
+    build (or the first one tested)."""
+    from mcatest import builds
+    build = builds()[0]
+    directory = tmp_path_factory.mktemp("impact_reference")
+    impact(build, directory)
+    return build, directory
+
+
+# the trajectory after the impact (contacts made, slid and dropped) on 2
+# ranks: the sums over the links and contacts of an automaton come in
+# another order; the difference is round-off grown by the contact events
+# (measured 1e-13 .. 1e-11)
+def test_impact_mpi(impact_reference, tmp_path):
+    build, reference = impact_reference
+    impact(build, tmp_path, nprocs=2)
+    difference = state_difference(final_state(tmp_path), final_state(reference))
+    print(f"\nimpact on 2 ranks against 1: largest difference {difference:.2e}")
+    assert difference < 1e-8
+
+
+def test_impact_restart(build, tmp_path):
+    """A restart file written while the bodies touch (step 1040: contact
+    rows with friction history) continues as the run split in memory, bit
+    for bit."""
+    memory = impact(build, tmp_path / "memory", split_at=1040)
+    restart = impact(build, tmp_path / "restart", split_at=1040, restart=True)
+    assert restart["c_A[3]"][0] > 0    # touching when the file was written
+    a = final_state(tmp_path / "memory", "impact2.dump", by_position=False)
+    b = final_state(tmp_path / "restart", "impact2.dump", by_position=False)
+    print(f"\nimpact across a restart file against the run split in memory: largest "
+          f"difference {state_difference(b, a):.2e}")
+    assert np.array_equal(a, b)
+    assert np.array_equal(memory["v_etot"], restart["v_etot"])
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_impact_kokkos(tmp_path, threads):
+    """The kk styles: on one thread in the CPU style's order (the same
+    bits), on two threads (or a GPU) to round-off grown by the events."""
+    from mcatest import kokkos_build
+    kk = kokkos_build()
+    impact(kk, tmp_path, extra_args=kokkos_args(threads))
+    host = tmp_path / "cpu"
+    impact(kk, host)
+    difference = state_difference(final_state(tmp_path), final_state(host))
+    print(f"\nimpact with the kk styles on {threads} thread(s) against the CPU styles: "
+          f"largest difference {difference:.2e}")
+    assert difference < (1e-14 if threads == 1 else 1e-8)
+
+
+# two automata in a periodic box compressed along x by fix deform without
+# remapping them (remap none): the box moves, the automata hardly (one
+# drifts at 0.01 m/s), so that the box moves more than the skin between
+# builds.  Automaton A (x = 2R) comes into touch with the image of B (x =
+# 12R) as the box length shrinks from 16R to 11.9R (their gap from 4R, 20
+# skins, to -0.1R; they bounce).  LAMMPS's CPU check rebuilds once the box moved more
+# than the skin and any atom moved; its Kokkos check never does, and the
+# pair would never be in a neighbor list
+DEFORM = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        p p p
+region          box block 0 {L} 0 {L2} 0 {L2} units box
+create_box      1 box
+create_atoms    1 single {x1} {y} {y} units box
+create_atoms    1 single {x2} {y} {y} units box
+mca_set         all packing sc radius {radius}
+group           a id 1
+velocity        a set 0.01 0 0 units box
+comm_modify     vel yes
+neighbor        {skin} bin
+neigh_modify    delay 0 every 1 check yes
+pair_style      mca contacts coulomb
+pair_coeff      * * E {E} nu {nu} rho 2700 friction 0.3 link no
+fix             nve all nve/mca
+fix             squeeze all deform 1 x final 0 {Lend} remap none units box
+timestep        {dt}
+compute         a all mca/atom contacts
+compute         A all reduce sum c_a
+thermo_style    custom step c_A pe
+thermo_modify   format float %.17g
+thermo          10
+run             {nsteps}
+variable        forced equal f_MCA_REBUILD
+print           "rebuilds forced by MCA_REBUILD: ${{forced}}"
+"""
+
+
+def deform(build, directory, extra_args=()):
+    L = 16 * R
+    script = DEFORM.format(L=L, L2=8 * R, x1=2 * R, x2=12 * R, y=4 * R, radius=R, skin=0.2 * R,
+                           E=E, nu=NU, dt=DT, Lend=11.9 * R, nsteps=1000)
+    build.run(script, directory, extra_args=extra_args)
+    log = (directory / "log.lammps").read_text()
+    builds = int(log.split("Neighbor list builds =")[1].split()[0])
+    forced = float(log.split("rebuilds forced by MCA_REBUILD:")[-1].split()[0])
+    return read_thermo(directory / "log.lammps"), builds, forced
+
+
+def test_deform_rebuilds_with_kokkos(tmp_path):
+    from mcatest import kokkos_build
+    kk = kokkos_build()
+    cpu, cpu_builds, cpu_forced = deform(kk, tmp_path / "cpu")
+    kokkos, kk_builds, kk_forced = deform(kk, tmp_path / "kk", extra_args=kokkos_args(1))
+    print(f"\nbox compressed by fix deform: neighbor list builds CPU {cpu_builds}, kk "
+          f"{kk_builds}; asked for by MCA_REBUILD CPU {cpu_forced:.0f}, kk {kk_forced:.0f}; "
+          f"automata in touch at most CPU {cpu['c_A'].max():.0f}, kk {kokkos['c_A'].max():.0f}")
+    assert cpu_builds > 10
+    assert kk_builds == cpu_builds
+    assert kk_forced > 0
+    # they meet (at ~ 80 m/s: the box shrinks by 4.1R in 50 us) and bounce
+    assert cpu["c_A"].max() == 2 and kokkos["c_A"].max() == 2
+    assert np.array_equal(cpu["PotEng"], kokkos["PotEng"])
+
+
+BAD = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+region          box block -0.01 0.01 -0.01 0.01 -0.01 0.01 units box
+create_box      2 box
+create_atoms    1 single 0 0 0 units box
+create_atoms    2 single 0 0 0.0021 units box
+mca_set         all packing sc radius 0.001
+comm_modify     vel yes
+neighbor        0.0002 bin
+{neigh}
+pair_style      mca {style}
+pair_coeff      * * E 70e9 nu 0.3 rho 2700 {coeff}
+fix             nve all nve/mca
+run             0
+"""
+
+DEFAULT_NEIGH = "neigh_modify delay 0 every 1 check yes"
+
+
+@pytest.mark.parametrize("case", [
+    dict(style="contacts coulomb", coeff="friction -0.1",
+         error="friction (Coulomb coefficient mu) must be >= 0, got -0.1"),
+    dict(style="contacts coulomb", coeff="friction 0.2", neigh="neigh_modify delay 10",
+         error="use 'neigh_modify delay 0 every 1 check yes' (now delay 10 every 1 check yes)"),
+    dict(style="contacts coulomb", coeff="friction 0.2", neigh="neigh_modify every 2 delay 0",
+         error="(now delay 0 every 2 check yes)"),
+    dict(style="contacts coulomb cutoff 0.0015", coeff="friction 0.2",
+         error="contacts need a cutoff of at least the largest touch distance 2 R_max = 0.002"),
+    dict(style="contacts stick", coeff="",
+         error="Unknown contacts part stick for pair_style mca (allowed: coulomb)"),
+])
+def test_bad_input(build, tmp_path, case):
+    script = BAD.format(style=case["style"], coeff=case["coeff"],
+                        neigh=case.get("neigh", DEFAULT_NEIGH))
+    result = build.run(script, tmp_path, check=False)
+    output = result.stdout + result.stderr
+    assert result.returncode != 0
+    assert case["error"] in output, output[-2000:]
+
+
+def test_friction_without_contacts_warns(build, tmp_path):
+    script = BAD.format(style="", coeff="friction 0.2", neigh=DEFAULT_NEIGH)
+    result = build.run(script, tmp_path)
+    assert "friction is given but the link model has no contact part" in result.stdout
+
+
+def test_capacity_exceeded(build, tmp_path):
+    """A user's capacity caps the tables: the automaton that needs more rows
+    for its links and contacts is named."""
+    script = BAD.format(style="contacts coulomb capacity 1", coeff="friction 0.2",
+                        neigh=DEFAULT_NEIGH)
+    script = script.replace("create_atoms    2 single 0 0 0.0021 units box",
+                            "create_atoms    2 single 0 0 0.0021 units box\n"
+                            "create_atoms    2 single 0 0.0021 0 units box\n"
+                            "create_atoms    1 single 0.0021 0 0 units box")
+    result = build.run(script, tmp_path, check=False)
+    output = result.stdout + result.stderr
+    assert result.returncode != 0
+    assert "links and contacts at step 0, more than the capacity 1" in output, output[-2000:]
