@@ -144,10 +144,10 @@ namespace MCAKernels {
   enum FractureSlot { F_CAUSE = 0, F_STEP, F_RELEASED, F_SIZE };
   enum FractureAtomSlot { FA_FORGOTTEN = 0, FA_RELEASED = FA_FORGOTTEN + NBREAK - 1, FA_SIZE };
   // the block of the contact part in a link row: the energy friction
-  // dissipated at the pair; per automaton: what its dropped contacts left
-  // (the energy their friction dissipated and the work of their forces
-  // less that, each automaton keeping the whole of each of its rows), and
-  // their number (mca_contact.h)
+  // dissipated at the pair; per automaton: what its dropped contacts and
+  // forgotten broken pairs left (the energy their friction dissipated and
+  // the rest of the work of their forces, each automaton keeping the whole
+  // of each of its rows), and their number (mca_contact.h)
   enum ContactSlot { C_FRICTION = 0, C_SIZE };
   enum ContactAtomSlot { CA_FRICTION = 0, CA_WORK, CA_DROPPED, CA_SIZE };
   static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");

@@ -986,8 +986,6 @@ void PairMCA::update_contacts()
   if (!contact_list) error->all(FLERR, "Pair mca: contacts without their neighbor list");
   links->sync_rows();
   links->to_host();
-  const int ca = model.layout().atom_offset[PART_CONTACT];
-  const int cf = model.layout().link_offset[PART_CONTACT];
   const int row_size = links->row_size;
   const double skin = neighbor->skin;
   const double *radius = atom->radius;
@@ -1012,9 +1010,7 @@ void PairMCA::update_contacts()
         const double reach = row[H_R0] + skin;
         if (distsq(i, domain->closest_image(i, j)) < reach * reach) continue;
       }
-      state[ca + CA_FRICTION] += row[cf + C_FRICTION];
-      state[ca + CA_WORK] += row[H_WORK] - row[cf + C_FRICTION];
-      state[ca + CA_DROPPED] += 1.0;
+      keep_dropped_energy(row, state);
       links->remove_row(i, m);
       changed = true;
     }
@@ -1078,6 +1074,20 @@ void PairMCA::update_contacts()
     cache_nlocal = -1;
     links_changed = 1;
   }
+}
+
+// the energy of a contact or broken pair whose row goes, kept in the law
+// state of the automaton (each automaton of the pair keeps the whole):
+// what its friction dissipated, the rest of the work of its forces (less
+// the plastic work of a link that broke), and the count
+void PairMCA::keep_dropped_energy(const double *row, double *state) const
+{
+  const MCALinkLayout &layout = model.layout();
+  const int ca = layout.atom_offset[PART_CONTACT];
+  const double friction = link_friction_work(row, layout);
+  state[ca + CA_FRICTION] += friction;
+  state[ca + CA_WORK] += row[H_WORK] - link_plastic_work(row, layout) - friction;
+  state[ca + CA_DROPPED] += 1.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -1144,6 +1154,8 @@ void PairMCA::forget_broken_links()
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
       if (cause > BREAK_NONE && cause < NBREAK) state[fa + FA_FORGOTTEN + cause - 1] += 1.0;
       state[fa + FA_RELEASED] += row[ff + F_RELEASED];
+      // (with contacts, what the broken pair did since its break too)
+      if (contacts()) keep_dropped_energy(row, state);
       links->remove_row(i, m);
       changed = true;
     }

@@ -125,6 +125,7 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   // contact rows of pairs that moved apart beyond reach, add one for every
   // unlinked pair within reach (from the contact neighbor list)
   void update_contacts();
+  void keep_dropped_energy(const double *row, double *state) const;
   class NeighList *contact_list;
   void init_list(int, class NeighList *) override;
   int restart_contacts;    // the restart file being read holds contact rules
