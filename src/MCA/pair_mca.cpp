@@ -28,7 +28,9 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix.h"
 #include "force.h"
+#include "group.h"
 #include "mca_compat.h"
 #include "mca_link_passes.h"
 #include "memory.h"
@@ -742,11 +744,61 @@ double PairMCA::init_one(int i, int j)
 
 void PairMCA::setup()
 {
-  if (links->created) return;
-  avec->sync_host();
+  if (!links->created) {
+    avec->sync_host();
+    links->to_host();
+    create_links();
+    links->host_changed();
+  }
+  check_rigid_bodies();
+}
+
+/* ----------------------------------------------------------------------
+   an automaton of a rigid body (fix rigid and its variants) that is linked
+   to an automaton outside the body is ill-defined: the rigid body would
+   carry the link's forces and couples without the link's deformation
+   being able to follow.  Links inside a body and contacts with the
+   outside (an indenter pressed into a sample) are fine
+------------------------------------------------------------------------- */
+
+void PairMCA::check_rigid_bodies()
+{
+  std::vector<Fix *> rigid;
+  for (int k = 0; k < modify->nfix; k++)
+    if (utils::strmatch(modify->fix[k]->style, "^rigid")) rigid.push_back(modify->fix[k]);
+  if (rigid.empty()) return;
+  links->sync_rows();
   links->to_host();
-  create_links();
-  links->host_changed();
+  const int *mask = atom->mask;
+  const int row_size = links->row_size;
+  for (Fix *fix : rigid) {
+    const int bit = fix->groupbit;
+    bigint crossing = 0;
+    tagint example = MAXTAGINT;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!(mask[i] & bit)) continue;
+      for (int m = 0; m < links->nlinks[i]; m++) {
+        const double *row = &links->history[i][m * row_size];
+        if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
+        const int j = atom->map(links->partner[i][m]);
+        if (j >= 0 && (mask[j] & bit)) continue;
+        crossing++;
+        example = MIN(example, atom->tag[i]);
+      }
+    }
+    bigint crossing_all = 0;
+    MPI_Allreduce(&crossing, &crossing_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (crossing_all == 0) continue;
+    const tagint mine = crossing ? example : MAXTAGINT;
+    tagint first = 0;
+    MPI_Allreduce(&mine, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    error->all(FLERR,
+               "Pair mca: {} links join automata of the rigid bodies of fix {} (group {}) to "
+               "automata outside them (e.g. automaton {}); a rigid body cannot follow a link's "
+               "deformation: unlink the body's atom types from the others (pair_coeff I J link "
+               "no; with contacts coulomb they still push and rub) or put the partners in the body",
+               crossing_all, fix->id, group->names[fix->igroup], first);
+  }
 }
 
 bool PairMCA::linkable(int i, int j)

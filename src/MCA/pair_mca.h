@@ -111,6 +111,7 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   void init_contact_row(int i, int j, double *row);
   void init_pair_row(int i, int j, int state, double *row);
   void init_contacts();
+  void check_rigid_bodies();
   void count_links();
   void set_masses();
   static const char *link_slot(const char *keyword);

@@ -629,3 +629,110 @@ def test_packing_kokkos_and_mpi(tmp_path):
         assert np.all(np.isfinite(packing_balance(t)))
         assert t["v_strain"][-1] > 0.5
         assert np.abs(packing_balance(t)).max() < 1.5e-2
+
+
+# bodies: an indenter of 2 x 2 x 2 automata (type 2), 0.02 R above a sample
+# of 6 x 6 x 2 (type 1, its bottom layer held), driven into it by fix move
+# at 0.5 m/s, or as a rigid body of fix rigid pushed by 8 x 10 N; they touch
+# through contacts only
+INDENTER = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        f f f
+lattice         sc {spacing}
+region          box block -2 8 -2 8 -2 7
+create_box      2 box
+region          sample block -0.5 5.5 -0.5 5.5 -0.5 1.5
+region          tip block 1.5 3.5 1.5 3.5 1.5 3.5
+create_atoms    1 region sample
+create_atoms    2 region tip
+mca_set         all packing sc radius {radius}
+group           sample type 1
+group           tip type 2
+displace_atoms  tip move 0 0 {gap} units box
+region          base block INF INF INF INF INF 0.5
+group           base region base
+group           free subtract sample base
+comm_modify     vel yes
+neighbor        {skin} bin
+neigh_modify    delay 0 every 1 check yes
+pair_style      mca contacts coulomb
+pair_coeff      * * E {E} nu {nu} rho 2700 friction 0.3
+pair_coeff      1 2 link {link}
+fix             nve sample nve/mca
+fix             hold base mca/setvelocity 0 0 0
+{drive}
+timestep        {dt}
+compute         ftip tip reduce sum fz
+compute         ffree free reduce sum fz
+compute         xtip tip reduce max x
+variable        newton equal c_ftip+c_ffree+f_hold[3]
+thermo_style    custom step c_ftip c_ffree f_hold[3] v_newton {extra}
+thermo_modify   format float %.17g
+thermo          50
+run             2000
+"""
+MOVE = "fix             push tip move linear 0 0 -0.5 units box"
+RIGID = ("fix             body tip rigid single\n"
+         "fix             push tip addforce 0 0 -10.0")
+
+
+def indenter(build, directory, drive, link="no", extra="", extra_args=(), check=True):
+    script = INDENTER.format(spacing=2 * R, radius=R, gap=0.02 * R, skin=0.2 * R, E=E, nu=NU,
+                             dt=DT, drive=drive, link=link, extra=extra)
+    result = build.run(script, directory, extra_args=extra_args, check=check)
+    return result if not check else read_thermo(directory / "log.lammps")
+
+
+def test_indenter_moved_by_fix_move(build, tmp_path):
+    """fix move drives the indenter (its automata integrated by fix move,
+    not nve/mca): the contacts push on it, the reaction on the indenter is
+    the force the held base and the free sample carry, opposite (Newton 3
+    to round-off), and it grows with the depth."""
+    t = indenter(build, tmp_path, MOVE)
+    reaction = np.asarray(t["c_ftip"])
+    scale = np.abs(reaction).max()
+    newton = np.abs(np.asarray(t["v_newton"])).max() / scale
+    print(f"\nindenter by fix move: reaction on the indenter up to {scale:.2f} N; tip + sample "
+          f"+ held base {newton:.1e} of it")
+    # it touches after 0.02 R / 0.5 m/s = 800 steps, then goes 0.06 R deep
+    assert reaction[0] == 0.0 and reaction[-1] > 1.0
+    assert newton < 1e-10
+
+
+def test_indenter_as_a_rigid_body(build, tmp_path):
+    """fix rigid carries the indenter, pushed by 10 N on each of its 8
+    automata: the body hits the sample and presses on it; the force fix
+    rigid sums on the body (fcm) is the push plus the contacts' reaction,
+    and the sample carries the opposite of the contacts' (Newton 3 to
+    round-off).  (Step 0 is left out: at the setup fix rigid sums the
+    forces before fix addforce adds its own.)"""
+    t = indenter(build, tmp_path, RIGID, extra="f_body[1][9]")
+    fcm = np.asarray(t["f_body[1][9]"])[1:]
+    tip = np.asarray(t["c_ftip"])[1:]
+    sample = (np.asarray(t["c_ffree"]) + np.asarray(t["f_hold[3]"]))[1:]
+    push = -80.0
+    print(f"\nindenter as a rigid body: contact force on the body up to "
+          f"{np.abs(tip - push).max():.2f} N, body force at the end {fcm[-1]:.3f} N")
+    assert np.abs(fcm - tip).max() < 1e-9 * np.abs(fcm).max()
+    assert np.abs(tip - push + sample).max() < 1e-10 * np.abs(sample).max()
+    assert np.abs(sample).max() > 80.0
+
+
+def test_rigid_body_linked_to_free_automata_is_an_error(build, tmp_path):
+    result = indenter(build, tmp_path, RIGID, link="yes", check=False)
+    output = result.stdout + result.stderr
+    assert result.returncode != 0
+    assert "links join automata of the rigid bodies of fix body (group tip) to automata " \
+        "outside them" in output, output[-2000:]
+
+
+def test_indenter_kokkos(tmp_path):
+    """The fix move indenter with the kk styles on one thread: the CPU
+    styles' reaction bit for bit."""
+    from mcatest import kokkos_build
+    kk = kokkos_build()
+    cpu = indenter(kk, tmp_path / "cpu", MOVE)
+    one = indenter(kk, tmp_path / "kk1", MOVE, extra_args=kokkos_args(1))
+    assert np.array_equal(cpu["c_ftip"], one["c_ftip"])
