@@ -477,17 +477,18 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool 
 }
 
 /* ----------------------------------------------------------------------
-   fracture, after the stress of the step: the links that break and the
-   damage (see PairMCA::compute())
+   fracture and healing, after the stress of the step: the links that
+   break, the contacts that heal and the damage (see PairMCA::compute())
 ------------------------------------------------------------------------- */
 
-template <class DeviceType> void PairMCAKokkos<DeviceType>::fracture(bool commit, bool lazy)
+template <class DeviceType>
+void PairMCAKokkos<DeviceType>::change_links(bool commit, bool lazy, int nhealed)
 {
   const int nlocal = atom->nlocal;
   const MCAPairViews<DeviceType> d = views();
   const MCABreakFlags flags = break_flags(!lazy);
-  if (commit) {
-    forward_comm_stage(STAGE_BREAK);
+  if (commit && (fractured() || heal_reads_epsp())) forward_comm_stage(STAGE_BREAK);
+  if (commit && fractured()) {
     MCAFracturePass<DeviceType> pass;
     pass.d = d;
     pass.flags = flags;
@@ -495,7 +496,20 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::fracture(bool commit
     Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass, nbroke);
     note_breaks(nbroke);
   }
-  if (!links_broke && commit) return;
+  if (commit && healing()) {
+    note_heals(nhealed);
+    if (links_healed) {
+      MCAHealedPass<DeviceType> healed;
+      healed.d = d;
+      healed.heal_step = flags.step;
+      Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), healed);
+    }
+    MCAHealPass<DeviceType> pass;
+    pass.d = d;
+    pass.flags = flags;
+    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass);
+  }
+  if (!fractured() || (!links_broke && !links_healed && commit)) return;
   MCADamagePass<DeviceType> damage;
   damage.d = d;
   damage.break_step = commit ? flags.step : -1.0;
@@ -548,11 +562,11 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     count_links_kk();
     // (the host copies of the table are current here)
     check_stable_timestep(update->setupflag ? ESTIMATE_SETUP : ESTIMATE_RENEIGHBOR);
-  } else if (links_broke) {
-    // links broke at the last step (see PairMCA::compute())
+  } else if (links_broke || links_healed) {
+    // links broke or contacts healed at the last step (see PairMCA::compute())
     count_links_kk();
   }
-  links_broke = 0;
+  links_broke = links_healed = 0;
 
   const bool commit = (update->setupflag == 0);
   const bool lazy = links->lazy_rows && links->row_sync == this;
@@ -584,7 +598,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   finish.eflag_atom = eflag_atom;
   finish.vflag_atom = vflag_atom;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), finish);
-  if (fractured()) fracture(commit, lazy);
+  if (fractured() || healing()) change_links(commit, lazy, sums.nhealed);
 
   linksKK->device_changed();
   if (commit && lazy) partner_rows_stale = 1;

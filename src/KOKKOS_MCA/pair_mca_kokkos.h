@@ -124,7 +124,8 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   template <template <class, class, class> class Pass>
   void link_kernel(bool commit, bool lazy, struct MCALinkSums &);
   void plastic_return(bool commit);
-  void fracture(bool commit, bool lazy);
+  // (nhealed: contacts that became links in this step's contact pass)
+  void change_links(bool commit, bool lazy, int nhealed);
   // the per-atom values a stage communicates: a, b (or none), the columns
   // of c (or none)
   void stage_views(int stage, MCAKokkos::dual_double_1d *&a, MCAKokkos::dual_double_1d *&b,

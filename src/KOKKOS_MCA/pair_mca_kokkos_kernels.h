@@ -122,13 +122,17 @@ struct MCALinkSums {
   double energy;
   double virial[6];
   bigint nlong;
+  int nhealed;    // contacts that became links (healing weld)
 
-  KOKKOS_INLINE_FUNCTION MCALinkSums() : energy(0.0), virial{0, 0, 0, 0, 0, 0}, nlong(0) {}
+  KOKKOS_INLINE_FUNCTION MCALinkSums() : energy(0.0), virial{0, 0, 0, 0, 0, 0}, nlong(0), nhealed(0)
+  {
+  }
   KOKKOS_INLINE_FUNCTION void operator+=(const MCALinkSums &rhs)
   {
     energy += rhs.energy;
     for (int k = 0; k < 6; k++) virial[k] += rhs.virial[k];
     nlong += rhs.nlong;
+    nhealed += rhs.nhealed;
   }
 #if MCA_KK_VOLATILE_JOIN
   KOKKOS_INLINE_FUNCTION void operator+=(const volatile MCALinkSums &rhs) volatile
@@ -136,6 +140,7 @@ struct MCALinkSums {
     energy += rhs.energy;
     for (int k = 0; k < 6; k++) virial[k] += rhs.virial[k];
     nlong += rhs.nlong;
+    nhealed += rhs.nhealed;
   }
 #endif
 };
@@ -475,6 +480,23 @@ template <class DeviceType> struct MCADamagePass {
     if (eflag_atom) d.eatom(i) -= released_i;
     released += released_i;
   }
+};
+
+// healing weld: the contacts that heal, then what they left (halves)
+template <class DeviceType> struct MCAHealPass {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  MCABreakFlags flags;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { heal_pass_of(d, flags, i); }
+};
+
+template <class DeviceType> struct MCAHealedPass {
+  typedef DeviceType device_type;
+  MCAPairViews<DeviceType> d;
+  double heal_step;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { healed_of(d, i, heal_step); }
 };
 
 /* ----------------------------------------------------------------------

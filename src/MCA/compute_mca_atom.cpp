@@ -47,11 +47,13 @@ enum {
   CONTACTS,
   FRICTION,
   CONTACT_WORK,
+  HEALED,
   NKEYWORD
 };
 const char *const keywords[NKEYWORD] = {
-    "sxx", "syy",   "szz",  "sxy",          "sxz",    "syz",      "smean",    "seq",
-    "eeq", "links", "epsp", "plastic_work", "damage", "contacts", "friction", "contact_work"};
+    "sxx",    "syy",      "szz",      "sxy",          "sxz",   "syz",
+    "smean",  "seq",      "eeq",      "links",        "epsp",  "plastic_work",
+    "damage", "contacts", "friction", "contact_work", "healed"};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -69,7 +71,7 @@ ComputeMCAAtom::ComputeMCAAtom(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR,
                  "Unknown compute mca/atom keyword {} (allowed: sxx syy szz sxy sxz syz "
                  "smean seq eeq links epsp plastic_work damage contacts friction "
-                 "contact_work)",
+                 "contact_work healed)",
                  arg[iarg]);
     which.push_back(k);
   }
@@ -119,6 +121,11 @@ double ComputeMCAAtom::value(int i, int w)
     return offset >= 0 ? links->atom_state[i][offset + MCAKernels::PA_WORK] : 0.0;
   }
   const MCAKernels::MCALinkLayout &layout = links->model.layout();
+  if (w == HEALED) {
+    // half of its links that healed: the sum over the automata is the count
+    const int ha = layout.atom_offset[MCAKernels::PART_HEALING];
+    return ha >= 0 ? 0.5 * links->atom_state[i][ha + MCAKernels::HA_HEALED] : 0.0;
+  }
   if (w == FRICTION || w == CONTACT_WORK) {
     // half of what its rows and its dropped contacts hold (each automaton
     // of a pair holds the whole): the sum over the automata is the total

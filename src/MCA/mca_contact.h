@@ -37,9 +37,12 @@
 namespace LAMMPS_NS {
 namespace MCAKernels {
 
-  // what the contact part knows of a pair of atom types
+  // what the contact and healing parts know of a pair of atom types
   struct MCAContactRule {
-    double mu;    // Coulomb friction coefficient
+    double mu;               // Coulomb friction coefficient
+    int heal;                // may its contacts heal into links (healing weld)?
+    double heal_pressure;    // at a compressive normal traction of at least this
+    double heal_work;        // once an automaton has done this plastic work per volume
   };
 
   // the work of a row's forces that friction dissipated (0 in a model
@@ -170,6 +173,69 @@ namespace MCAKernels {
       for (int m = 0; m < 3; m++) out.t[m] = 0.0;
     }
     pushing_pair_forces(hist, mo, out);
+  }
+
+  /* ----------------------------------------------------------------------
+     healing weld (doc/src/pair_mca.rst, "Healing"): a contact whose type
+     pair may heal is marked at the end of a step where it pushes with a
+     normal traction of at least heal_pressure and where the larger of the
+     plastic work densities of its automata (the softer one's, where one
+     deforms) has reached heal_work.  At the next step it becomes a link,
+     stress-free at its length of that step: its last forces gave the
+     automata the first half kick of that step, so their work over the
+     step (trapezoidal: half of it) still belongs to the contact, as the
+     work of a broken link's last forces belongs to its break
+     (finish_break).  What the contact held, its friction energy and the
+     rest of the work of its forces (its elastic energy), leaves the row
+     for its automata's law state (healed_of, mca_link_passes.h)
+  ------------------------------------------------------------------------- */
+
+  // does contact row hist meet its type pair's healing criterion?  w_lo,
+  // w_hi: the plastic work densities of its automata
+  MCA_INLINE bool heals(const double *hist, const MCAContactRule &rule, double w_lo, double w_hi)
+  {
+    if (!rule.heal) return false;
+    const double sig = 0.5 * (hist[H_LO + HALF_SIG] + hist[H_HI + HALF_SIG]);
+    return -sig >= rule.heal_pressure && (w_lo > w_hi ? w_lo : w_hi) >= rule.heal_work;
+  }
+
+  // a contact marked to become a link at this step?
+  MCA_INLINE bool heal_pending(const double *hist, const MCALinkLayout &layout, double step)
+  {
+    const int healing = layout.link_offset[PART_HEALING];
+    return healing >= 0 && hist[healing + HL_STEP] == step;
+  }
+
+  // the step of a marked contact: it becomes a link, stress-free at the
+  // present length, with the same contact plane (half lengths in the
+  // ratio of the radii, R_lo : R_hi) and reference area; no force this
+  // step (hist updated, out set)
+  MCA_FORCE_INLINE void heal_contact(double *hist, const MCALinkEnds &e, MCALinkForces &out)
+  {
+    const MCALinkLayout &layout = *e.layout;
+    MCALinkMotion mo;
+    link_motion(hist, e, out, mo);
+    mo.sig_old = broken_traction(mo.sig_old);
+    half_lengths(hist, mo);
+    link_slip(hist, e, out.n, mo);
+    double *block = hist + layout.link_offset[PART_HEALING];
+    const double friction = link_friction_work(hist, layout);
+    block[HL_FRICTION] = friction;
+    block[HL_WORK] = hist[H_WORK] + link_work_old(hist, mo) - friction;
+    hist[layout.link_offset[PART_CONTACT] + C_FRICTION] = 0.0;
+    hist[H_WORK] = 0.0;
+    // (a contact row has no plastic work, no damper force, no break)
+    contact_rest(hist);
+    const double scale = out.r / (hist[H_Q0LO] + hist[H_Q0HI]);
+    hist[H_Q0LO] *= scale;
+    hist[H_Q0HI] *= scale;
+    hist[H_R0] = hist[H_RPREV] = out.r;
+    for (int m = 0; m < 3; m++) hist[H_NPREV + m] = out.n[m];
+    hist[H_APREV] = out.area = hist[H_A0];
+    hist[H_STATE] = LINK_LINKED;
+    out.sig = 0.0;
+    for (int m = 0; m < 3; m++)
+      out.t[m] = out.trac[m] = out.couple[m] = out.f[m] = out.tq_lo[m] = out.tq_hi[m] = 0.0;
   }
 
 }    // namespace MCAKernels

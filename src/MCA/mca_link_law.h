@@ -120,6 +120,7 @@ namespace MCAKernels {
     PART_PLASTICITY,
     PART_FRACTURE,
     PART_CONTACT,
+    PART_HEALING,
     NPARTS
   };
 
@@ -150,6 +151,14 @@ namespace MCAKernels {
   // of each of its rows), and their number (mca_contact.h)
   enum ContactSlot { C_FRICTION = 0, C_SIZE };
   enum ContactAtomSlot { CA_FRICTION = 0, CA_WORK, CA_DROPPED, CA_SIZE };
+  // the block of the healing part in a link row: the step the contact
+  // becomes (or became) a link at (0: never; steps of a run are >= 1) and
+  // what it left then, the energy its friction had dissipated and the
+  // rest of the work of its forces (its elastic energy: the new link
+  // starts stress-free); per automaton: the number of its links that
+  // healed (mca_contact.h)
+  enum HealingSlot { HL_STEP = 0, HL_FRICTION, HL_WORK, HL_SIZE };
+  enum HealingAtomSlot { HA_HEALED = 0, HA_SIZE };
   static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");
 
   struct MCALinkPartInfo {
@@ -166,6 +175,7 @@ namespace MCAKernels {
       {"plasticity", "mises", PART_PLASTICITY, P_SIZE, PA_SIZE, false},
       {"fracture", "links", PART_FRACTURE, F_SIZE, FA_SIZE, false},
       {"contacts", "coulomb", PART_CONTACT, C_SIZE, CA_SIZE, false},
+      {"healing", "weld", PART_HEALING, HL_SIZE, HA_SIZE, false},
   };
   constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
   static_assert(MCA_LINK_PARTS[PART_ELASTIC].part == PART_ELASTIC,

@@ -403,7 +403,12 @@ namespace MCAKernels {
       MCALinkForces out;
       const MCAMaterial &m_lo = d.material(d.type(lo)), &m_hi = d.material(d.type(hi));
       if (State == LINK_CONTACT) {
-        contact_pair(h, e, m_lo, m_hi, d.contact_rule(d.type(lo), d.type(hi)).mu, out);
+        if (p.commit && heal_pending(h, d.layout, p.step)) {
+          heal_contact(h, e, out);
+          totals.nhealed++;
+        } else {
+          contact_pair(h, e, m_lo, m_hi, d.contact_rule(d.type(lo), d.type(hi)).mu, out);
+        }
       } else {
         const bool first = p.commit && h[ff + F_STEP] == p.step - 1.0;
         if (friction)
@@ -507,6 +512,58 @@ namespace MCAKernels {
     const double total = d.nlinks(i) - ncontacts + forgotten;
     d.damage(i) = total > 0.0 ? (nbroken + forgotten) / total : 0.0;
     return released;
+  }
+
+  /* ----------------------------------------------------------------------
+     healing weld (mca_contact.h): the heal pass, after the contact pass
+     and the fracture pass of a step, marks the contacts automaton i
+     evaluates that meet their criterion (with the same ownership rule, so
+     every rank and thread count marks the same contacts); the contact
+     pass of the next step makes them links (heal_contact); then each
+     automaton takes what its healed contacts left into its law state
+     (healed_of).  The plastic work density reads the plastic strain of
+     the automata of this step (sent to the ghosts)
+  ------------------------------------------------------------------------- */
+
+  template <class D> MCA_FUNCTION void heal_pass_of(const D &d, const MCABreakFlags &p, int i)
+  {
+    const bool plastic = d.layout.link_offset[PART_PLASTICITY] >= 0;
+    const int healing = d.layout.link_offset[PART_HEALING];
+    for (int m = 0; m < d.nlinks(i); m++) {
+      double *row;
+      int j;
+      if (!evaluates<LINK_CONTACT>(d, i, m, row, j)) continue;
+      const bool ilo = d.tag(i) < d.tag(j);
+      const int lo = ilo ? i : j, hi = ilo ? j : i;
+      const int type_lo = d.type(lo), type_hi = d.type(hi);
+      const MCAContactRule &rule = d.contact_rule(type_lo, type_hi);
+      double w_lo = 0.0, w_hi = 0.0;
+      if (plastic && rule.heal_work > 0.0) {
+        w_lo = plastic_work_density(d.hardening(type_lo), d.epsp(lo));
+        w_hi = plastic_work_density(d.hardening(type_hi), d.epsp(hi));
+      }
+      if (!heals(row, rule, w_lo, w_hi)) continue;
+      // (a link from the next step on)
+      row[healing + HL_STEP] = p.step + 1.0;
+      if (j < d.nlocal && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
+    }
+  }
+
+  // what the contacts of automaton i that became links at step heal_step
+  // (this one) left, to its law state (each automaton keeps the whole
+  // of each of its rows, as for a dropped contact,
+  // PairMCA::keep_dropped_energy)
+  template <class D> MCA_FUNCTION void healed_of(const D &d, int i, double heal_step)
+  {
+    const int hl = d.layout.link_offset[PART_HEALING];
+    const int ca = d.layout.atom_offset[PART_CONTACT], ha = d.layout.atom_offset[PART_HEALING];
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const double *row = current_row(d, i, m);
+      if (row[hl + HL_STEP] != heal_step || !linked(row)) continue;
+      d.atom_state(i, ca + CA_FRICTION) += row[hl + HL_FRICTION];
+      d.atom_state(i, ca + CA_WORK) += row[hl + HL_WORK];
+      d.atom_state(i, ha + HA_HEALED) += 1.0;
+    }
   }
 
   // forces and torques of automaton i from its link sums

@@ -71,6 +71,20 @@ namespace MCAKernels {
     return h.sig[k] + hardening_slope(h, k) * (ep - h.eps[k]);
   }
 
+  // the plastic work per unit volume of a material strained plastically
+  // to eps_p along its curve: the integral of sigma_y from 0 to eps_p
+  // (exact for the piecewise-linear curve; 0 for a material that does not
+  // yield)
+  MCA_INLINE double plastic_work_density(const MCAHardening &h, double ep)
+  {
+    if (h.npoints == 0 || ep <= 0.0) return 0.0;
+    double work = 0.0;
+    int k = 0;
+    for (; k + 1 < h.npoints && ep >= h.eps[k + 1]; k++)
+      work += 0.5 * (h.sig[k] + h.sig[k + 1]) * (h.eps[k + 1] - h.eps[k]);
+    return work + 0.5 * (h.sig[k] + flow_stress(h, ep)) * (ep - h.eps[k]);
+  }
+
   /* ----------------------------------------------------------------------
      radial return of a trial equivalent stress seq > sigma_y(ep): the
      plastic strain increment dep >= 0 with

@@ -58,6 +58,8 @@ static constexpr double RESTART_HARDENING = -4.0;
 static constexpr double RESTART_FRACTURE = -5.0;
 // then the friction of the type pairs
 static constexpr double RESTART_CONTACTS = -6.0;
+// then the healing criteria of the type pairs
+static constexpr double RESTART_HEALING = -7.0;
 // the id of the contact neighbor list among the pair style's requests
 static constexpr int CONTACT_LIST_ID = 1;
 
@@ -99,8 +101,8 @@ PairMCA::PairMCA(LAMMPS *lmp) :
     PairMCALinked(lmp, "Pair mca"), materials(lmp), link_allowed(nullptr), link_tolerance(nullptr),
     link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr), smean_pred(nullptr),
     predictor_sums(nullptr), bmat(nullptr), return_scale(nullptr), return_smean(nullptr),
-    avec(nullptr), contact_list(nullptr), restart_contacts(0), stability(nullptr), dt_monitor(),
-    dt_estimated(0), dt_warned_ratio(0.0), links_changed(0)
+    avec(nullptr), contact_list(nullptr), restart_contacts(0), restart_healing(0),
+    stability(nullptr), dt_monitor(), dt_estimated(0), dt_warned_ratio(0.0), links_changed(0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -119,6 +121,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   restart_tables = 0;
   restart_fracture = 0;
   links_broke = 0;
+  links_healed = 0;
   break_scatter = 0.0;
   break_seed = 0;
   select_parts({});
@@ -152,7 +155,7 @@ void PairMCA::allocate()
   memory->create(link_tolerance, n, n, "pair:link_tolerance");
   materials.allocate(atom->ntypes);
   break_rules.assign(n * n, MCABreakRule{BREAK_NONE, 0.0, 0.0});
-  contact_rules.assign(n * n, MCAContactRule{0.0});
+  contact_rules.assign(n * n, MCAContactRule{0.0, 0, 0.0, 0.0});
   friction_given.assign(n * n, 0);
   for (int i = 0; i < n; i++) {
     for (int j = 0; j < n; j++) {
@@ -242,6 +245,21 @@ bool PairMCA::contacts() const
   return model.layout().link_offset[PART_CONTACT] >= 0;
 }
 
+bool PairMCA::healing() const
+{
+  return model.layout().link_offset[PART_HEALING] >= 0;
+}
+
+// a work criterion needs the plastic strain of the ghost automata of the
+// step, which the fracture part sends anyway
+bool PairMCA::heal_reads_epsp() const
+{
+  if (!plastic()) return false;
+  for (const auto &rule : contact_rules)
+    if (rule.heal && rule.heal_work > 0.0) return true;
+  return false;
+}
+
 // a parameter without its part of the link law, or a part without its
 // parameter, is most likely a mistake of the input: say so
 void PairMCA::check_parts()
@@ -254,7 +272,29 @@ void PairMCA::check_parts()
   for (const auto &rule : break_rules) any_break = any_break || rule.criterion != BREAK_NONE;
   bool any_friction = false;
   for (int given : friction_given) any_friction = any_friction || given;
+  bool any_heal = false, any_heal_work = false;
+  for (const auto &rule : contact_rules) {
+    any_heal = any_heal || rule.heal;
+    any_heal_work = any_heal_work || (rule.heal && rule.heal_work > 0.0);
+  }
+  // healing turns contacts into links: without them it would do nothing
+  if (healing() && !contacts())
+    error->all(FLERR,
+               "Pair mca: healing weld needs contacts to heal: add 'contacts coulomb' to "
+               "pair_style mca");
+  if (any_heal && !healing())
+    error->all(FLERR,
+               "Pair mca: pair_coeff heal is given but the link model has no healing part: add "
+               "'healing weld' (and 'contacts coulomb') to pair_style mca");
+  if (any_heal_work && !plastic())
+    error->all(FLERR,
+               "Pair mca: pair_coeff heal ... work needs the plastic work of the automata: add "
+               "'plasticity mises' to pair_style mca (or leave out the work criterion)");
   if (comm->me != 0) return;
+  if (healing() && !any_heal)
+    error->warning(FLERR,
+                   "Pair mca: healing weld without a healing criterion for any pair of atom "
+                   "types heals nothing (give 'heal' in pair_coeff)");
   if (!contacts() && any_friction)
     error->warning(FLERR,
                    "Pair mca: friction is given but the link model has no contact part: add "
@@ -336,6 +376,9 @@ void PairMCA::coeff(int narg, char **arg)
     if (key == "break") {
       parse_break(ilo, ihi, jlo, jhi, narg, arg, iarg);
       continue;
+    } else if (key == "heal") {
+      parse_heal(ilo, ihi, jlo, jhi, narg, arg, iarg);
+      continue;
     } else if (key == "hardening" && strcmp(arg[iarg + 1], "table") == 0) {
       if (iarg + 4 > narg)
         utils::missing_cmd_args(FLERR, "pair_coeff hardening table (file keyword)", error);
@@ -362,7 +405,7 @@ void PairMCA::coeff(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Unknown pair_coeff keyword {} for pair mca (allowed: {} link tolerance break "
-                 "friction)",
+                 "friction heal)",
                  key, materials.keyword_list());
     }
     iarg += 2;
@@ -443,6 +486,48 @@ void PairMCA::parse_break(int ilo, int ihi, int jlo, int jhi, int narg, char **a
   iarg += 2 + nparams[c];
 }
 
+/* ----------------------------------------------------------------------
+   pair_coeff I J ... heal no | heal p [work w]
+   healing weld: contacts of the type pairs in the ranges heal into links
+   at a compressive normal traction of at least p (> 0), and once one of
+   their automata has done the plastic work w per volume (>= 0, default 0)
+------------------------------------------------------------------------- */
+
+void PairMCA::parse_heal(int ilo, int ihi, int jlo, int jhi, int narg, char **arg, int &iarg)
+{
+  MCAContactRule rule{0.0, 0, 0.0, 0.0};
+  if (strcmp(arg[iarg + 1], "no") == 0) {
+    iarg += 2;
+  } else {
+    rule.heal = 1;
+    rule.heal_pressure = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (!(rule.heal_pressure > 0.0 && rule.heal_pressure < 1.0e300))
+      error->all(FLERR,
+                 "Pair mca: heal pressure (compressive normal traction) must be > 0, got {} "
+                 "('heal no' forbids healing)",
+                 arg[iarg + 1]);
+    iarg += 2;
+    if (iarg < narg && strcmp(arg[iarg], "work") == 0) {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_coeff heal ... work", error);
+      rule.heal_work = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(rule.heal_work >= 0.0 && rule.heal_work < 1.0e300))
+        error->all(FLERR,
+                   "Pair mca: heal work (plastic work per volume of an automaton) must be >= 0, "
+                   "got {}",
+                   arg[iarg + 1]);
+      iarg += 2;
+    }
+  }
+  const int n = atom->ntypes + 1;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = jlo; j <= jhi; j++)
+      for (int k : {i * n + j, j * n + i}) {
+        contact_rules[k].heal = rule.heal;
+        contact_rules[k].heal_pressure = rule.heal_pressure;
+        contact_rules[k].heal_work = rule.heal_work;
+      }
+}
+
 /* ---------------------------------------------------------------------- */
 
 void PairMCA::init_style()
@@ -468,13 +553,12 @@ void PairMCA::init_style()
   avec->modified_host();
 
   // cutoff: the longest possible link plus room to stretch by R_max/2
+  double rmax = 0.0, rmaxall = 0.0;
+  for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
+  MPI_Allreduce(&rmax, &rmaxall, 1, MPI_DOUBLE, MPI_MAX, world);
   if (cutoff_user > 0.0) {
     cut_global = cutoff_user;
   } else {
-    double rmax = 0.0;
-    for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
-    double rmaxall;
-    MPI_Allreduce(&rmax, &rmaxall, 1, MPI_DOUBLE, MPI_MAX, world);
     double tolmax = tolerance_default;
     for (int a = 1; a <= atom->ntypes; a++)
       for (int b = 1; b <= atom->ntypes; b++) tolmax = MAX(tolmax, link_tolerance[a][b]);
@@ -482,7 +566,7 @@ void PairMCA::init_style()
     if (cut_global <= 0.0) cut_global = 1.0;    // no atoms yet
   }
 
-  if (contacts()) init_contacts();
+  if (contacts()) init_contacts(rmaxall);
 }
 
 /* ----------------------------------------------------------------------
@@ -491,7 +575,7 @@ void PairMCA::init_style()
    when the box moves (FixMCARebuild)
 ------------------------------------------------------------------------- */
 
-void PairMCA::init_contacts()
+void PairMCA::init_contacts(double rmax)
 {
   mix_friction();
   // a contact row exists for every pair that can touch before the next
@@ -503,14 +587,11 @@ void PairMCA::init_contacts()
                "moved half the skin: use 'neigh_modify delay 0 every 1 check yes' (now delay {} "
                "every {} check {})",
                neighbor->delay, neighbor->every, neighbor->dist_check ? "yes" : "no");
-  double rmax = 0.0, rmaxall = 0.0;
-  for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
-  MPI_Allreduce(&rmax, &rmaxall, 1, MPI_DOUBLE, MPI_MAX, world);
-  if (cut_global < 2.0 * rmaxall)
+  if (cut_global < 2.0 * rmax)
     error->all(FLERR,
                "Pair mca: contacts need a cutoff of at least the largest touch distance 2 R_max = "
                "{}; pair_style mca cutoff is {}",
-               2.0 * rmaxall, cut_global);
+               2.0 * rmax, cut_global);
   MCACompat::request_full_list(neighbor, this, instance_me, CONTACT_LIST_ID);
   if (!MCACompat::fix_by_id(modify, "MCA_REBUILD")) modify->add_fix("MCA_REBUILD all MCA_REBUILD");
 }
@@ -789,7 +870,7 @@ void PairMCA::check_rigid_bodies()
     bigint crossing_all = 0;
     MPI_Allreduce(&crossing, &crossing_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
     if (crossing_all == 0) continue;
-    const tagint mine = crossing ? example : MAXTAGINT;
+    tagint mine = crossing ? example : MAXTAGINT;
     tagint first = 0;
     MPI_Allreduce(&mine, &first, 1, MPI_LMP_TAGINT, MPI_MIN, world);
     error->all(FLERR,
@@ -936,8 +1017,8 @@ void PairMCA::compute(int eflag, int vflag)
   // the last step (on any processor)
   if (fractured() && partners_outdated()) forget_broken_links();
   if (contacts() && neighbor->ago == 0) update_contacts();
-  if (refresh_partners() || links_broke) count_links();
-  links_broke = 0;
+  if (refresh_partners() || links_broke || links_healed) count_links();
+  links_broke = links_healed = 0;
   if (neighbor->ago == 0)
     check_stable_timestep(update->setupflag ? ESTIMATE_SETUP : ESTIMATE_RENEIGHBOR);
 
@@ -993,16 +1074,27 @@ void PairMCA::compute(int eflag, int vflag)
   // step break (from the next step on they are broken pairs); the damage
   // changes only then (and is found again at a setup).  The energy the
   // breaks released leaves the elastic energy of this step's tally
+  const MCABreakFlags b = break_flags(p.eager);
+  if (p.commit && (fractured() || heal_reads_epsp())) {
+    comm_stage = STAGE_BREAK;
+    MCACompat::forward_comm(comm, this);
+  }
+  if (fractured() && p.commit) {
+    int nbroke = 0;
+    for (int i = 0; i < d.nlocal; i++) nbroke += fracture_pass_of(d, b, i);
+    note_breaks(nbroke);
+  }
+  // healing: the contacts marked at the last step became links in the
+  // contact pass; what they held goes to their automata's law state.  The
+  // contacts that meet their criterion now are marked
+  if (healing() && p.commit) {
+    note_heals(totals.nhealed);
+    if (links_healed)
+      for (int i = 0; i < d.nlocal; i++) healed_of(d, i, b.step);
+    for (int i = 0; i < d.nlocal; i++) heal_pass_of(d, b, i);
+  }
   if (fractured()) {
-    const MCABreakFlags b = break_flags(p.eager);
-    if (p.commit) {
-      comm_stage = STAGE_BREAK;
-      MCACompat::forward_comm(comm, this);
-      int nbroke = 0;
-      for (int i = 0; i < d.nlocal; i++) nbroke += fracture_pass_of(d, b, i);
-      note_breaks(nbroke);
-    }
-    if (links_broke || !p.commit) {
+    if (links_broke || links_healed || !p.commit) {
       const double break_step = p.commit ? b.step : -1.0;
       double released = 0.0;
       for (int i = 0; i < d.nlocal; i++) {
@@ -1152,6 +1244,13 @@ void PairMCA::note_breaks(int nbroke_local)
 {
   MPI_Allreduce(&nbroke_local, &links_broke, 1, MPI_INT, MPI_MAX, world);
   if (links_broke) links_changed = 1;
+}
+
+// the same for contacts that became links
+void PairMCA::note_heals(int nhealed_local)
+{
+  MPI_Allreduce(&nhealed_local, &links_healed, 1, MPI_INT, MPI_MAX, world);
+  if (links_healed) links_changed = 1;
 }
 
 // what a link pass needs besides the data (spins turn the automata only
@@ -1309,6 +1408,14 @@ void PairMCA::write_restart(FILE *fp)
       fwrite(&contact_rules[i * n + j].mu, sizeof(double), 1, fp);
       fwrite(&friction_given[i * n + j], sizeof(int), 1, fp);
     }
+  // healing criteria of the type pairs
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      const MCAContactRule &rule = contact_rules[i * n + j];
+      fwrite(&rule.heal, sizeof(int), 1, fp);
+      fwrite(&rule.heal_pressure, sizeof(double), 1, fp);
+      fwrite(&rule.heal_work, sizeof(double), 1, fp);
+    }
 }
 
 /* ----------------------------------------------------------------------
@@ -1380,13 +1487,31 @@ void PairMCA::read_restart(FILE *fp)
       contact_rules[i * n + j].mu = contact_rules[j * n + i].mu = mu;
       friction_given[i * n + j] = friction_given[j * n + i] = given;
     }
+  if (!restart_healing) return;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      MCAContactRule rule{0.0, 0, 0.0, 0.0};
+      if (me == 0) {
+        utils::sfread(FLERR, &rule.heal, sizeof(int), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &rule.heal_pressure, sizeof(double), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &rule.heal_work, sizeof(double), 1, fp, nullptr, error);
+      }
+      MPI_Bcast(&rule.heal, 1, MPI_INT, 0, world);
+      MPI_Bcast(&rule.heal_pressure, 1, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&rule.heal_work, 1, MPI_DOUBLE, 0, world);
+      for (int k : {i * n + j, j * n + i}) {
+        contact_rules[k].heal = rule.heal;
+        contact_rules[k].heal_pressure = rule.heal_pressure;
+        contact_rules[k].heal_work = rule.heal_work;
+      }
+    }
 }
 
 /* ---------------------------------------------------------------------- */
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
-  fwrite(&RESTART_CONTACTS, sizeof(double), 1, fp);
+  fwrite(&RESTART_HEALING, sizeof(double), 1, fp);
   fwrite(&tolerance_default, sizeof(double), 1, fp);
   fwrite(&cutoff_user, sizeof(double), 1, fp);
   fwrite(&capacity_user, sizeof(int), 1, fp);
@@ -1404,7 +1529,8 @@ void PairMCA::read_restart_settings(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  restart_contacts = (first == RESTART_CONTACTS);
+  restart_healing = (first == RESTART_HEALING);
+  restart_contacts = restart_healing || (first == RESTART_CONTACTS);
   restart_fracture = restart_contacts || (first == RESTART_FRACTURE);
   restart_tables = restart_fracture || (first == RESTART_HARDENING);
   const bool named_parts = restart_tables || (first == RESTART_NAMED_PARTS);

@@ -73,8 +73,9 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   double break_scatter;
   int break_seed;
 
-  // contacts: the friction of each type pair ((ntypes + 1)^2, symmetric)
-  // and whether pair_coeff gave it (else mixed from the types' own)
+  // contacts: the friction and healing criterion of each type pair
+  // ((ntypes + 1)^2, symmetric) and whether pair_coeff gave the friction
+  // (else mixed from the types' own)
   std::vector<MCAKernels::MCAContactRule> contact_rules;
   std::vector<int> friction_given;
 
@@ -110,7 +111,7 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   void init_link_row(int i, int j, double *row) override;
   void init_contact_row(int i, int j, double *row);
   void init_pair_row(int i, int j, int state, double *row);
-  void init_contacts();
+  void init_contacts(double rmax);    // (rmax: the largest radius)
   void check_rigid_bodies();
   void count_links();
   void set_masses();
@@ -120,6 +121,7 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   bool plastic() const;
   bool fractured() const;
   bool contacts() const;
+  bool healing() const;
   // contacts: the friction of the type pairs pair_coeff left unset (mixed)
   void mix_friction();
   // at reneighboring, before the partners are found again: drop the
@@ -130,6 +132,8 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   class NeighList *contact_list;
   void init_list(int, class NeighList *) override;
   int restart_contacts;    // the restart file being read holds contact rules
+  int restart_healing;     // and healing criteria
+  void parse_heal(int ilo, int ihi, int jlo, int jhi, int narg, char **arg, int &iarg);
   void parse_break(int ilo, int ihi, int jlo, int jhi, int narg, char **arg, int &iarg);
   // drop broken pairs farther apart than the cutoff from the link tables
   // (at reneighboring, before the partners are found again)
@@ -138,6 +142,10 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   MCAKernels::MCALinkPassFlags link_pass_flags(bool commit, bool eager) const;
   int links_broke;    // links broke at the last step (on some processor)
   void note_breaks(int nbroke_local);
+  int links_healed;    // contacts healed at the last step (on some processor)
+  void note_heals(int nhealed_local);
+  // ghost automata need the plastic strain of the step (STAGE_BREAK)
+  bool heal_reads_epsp() const;
 
   // the stable time step: its estimate, and what it was made from (the
   // monitor value of the stiffness, a checksum of the masses and

@@ -124,6 +124,7 @@ struct PairMCA::HostTally {
 
 struct MCAHostTotals {
   bigint nlong = 0;
+  int nhealed = 0;    // contacts that became links (healing weld)
 };
 
 }    // namespace LAMMPS_NS

@@ -83,3 +83,33 @@ set             group all omega v_wx_var v_wy_var v_wz_var
 
 def fcc_radius(a):
     return a / (2.0 * math.sqrt(2.0))
+
+
+def block_on_plane(box, plane, block, top, atom_modify="map array"):
+    """The start of a scene of two bodies of an sc packing: a plane of
+    automata (type 1, group plane) and a block (type 2, group block) on it,
+    not linked unless the pair style says so, the block's layers above z =
+    top (lattice units) in group top; regions as 'xlo xhi ylo yhi zlo zhi'
+    in lattice units.  The text keeps the fields {spacing} (lattice
+    spacing 2R), {radius} and {skin} for the caller's format()."""
+    return f"""
+units           si
+atom_style      mca
+atom_modify     {atom_modify}
+boundary        f f f
+lattice         sc {{spacing}}
+region          box block {box}
+create_box      2 box
+region          plane block {plane}
+region          block block {block}
+create_atoms    1 region plane
+create_atoms    2 region block
+mca_set         all packing sc radius {{radius}}
+group           plane type 1
+group           block type 2
+region          top block INF INF INF INF {top} INF
+group           top region top
+comm_modify     vel yes
+neighbor        {{skin}} bin
+neigh_modify    delay 0 every 1 check yes
+"""

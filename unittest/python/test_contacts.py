@@ -27,6 +27,7 @@ import pathlib
 import numpy as np
 import pytest
 
+from mca_inputs import block_on_plane
 from mcatest import kokkos_args, read_dump, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -40,27 +41,8 @@ DT = 5.0e-8         # s; the stable time step of these scenes is about 2e-7 s
 # pressed by its top layer and dragged along x at speed v (ramped); the
 # plane is held.  Normal traction about 7 MPa: the contacts stick over a
 # slip of mu sigma c_t ~ 8e-8 m and then slide over the rest of 2e-6 m
-BLOCK = """
-units           si
-atom_style      mca
-atom_modify     map array
-boundary        f f f
-lattice         sc {spacing}
-region          box block -2 7 -2 7 -2 6
-create_box      2 box
-region          plane block -0.5 4.5 -0.5 4.5 -0.5 0.5
-region          block block 0.5 3.5 0.5 3.5 0.5 2.5
-create_atoms    1 region plane
-create_atoms    2 region block
-mca_set         all packing sc radius {radius}
-group           plane type 1
-group           block type 2
-region          top block INF INF INF INF 1.5 INF
-group           top region top
-comm_modify     vel yes
-neighbor        {skin} bin
-neigh_modify    delay 0 every 1 check yes
-pair_style      mca contacts coulomb
+BLOCK = block_on_plane("-2 7 -2 7 -2 6", "-0.5 4.5 -0.5 4.5 -0.5 0.5", "0.5 3.5 0.5 3.5 0.5 2.5",
+                       1.5) + """pair_style      mca contacts coulomb
 pair_coeff      * * E {E} nu {nu} rho 2700 friction {mu}
 pair_coeff      1 2 link no
 fix             nve all nve/mca
@@ -334,7 +316,7 @@ def test_impact_restart(build, tmp_path):
 
 
 @pytest.mark.parametrize("threads", [1, 2])
-def test_impact_kokkos(tmp_path, threads):
+def test_impact_kk(tmp_path, threads):
     """The kk styles: on one thread in the CPU style's order (the same
     bits), on two threads (or a GPU) to round-off grown by the events."""
     from mcatest import kokkos_build
@@ -398,11 +380,12 @@ def deform(build, directory, extra_args=()):
     return read_thermo(directory / "log.lammps"), builds, forced
 
 
-def test_deform_rebuilds_with_kokkos(tmp_path):
+def test_deform_rebuilds_kk(tmp_path):
+    """(two threads, or the GPU: the pair's sums are the same in any order)"""
     from mcatest import kokkos_build
     kk = kokkos_build()
     cpu, cpu_builds, cpu_forced = deform(kk, tmp_path / "cpu")
-    kokkos, kk_builds, kk_forced = deform(kk, tmp_path / "kk", extra_args=kokkos_args(1))
+    kokkos, kk_builds, kk_forced = deform(kk, tmp_path / "kk", extra_args=kokkos_args(2))
     print(f"\nbox compressed by fix deform: neighbor list builds CPU {cpu_builds}, kk "
           f"{kk_builds}; asked for by MCA_REBUILD CPU {cpu_forced:.0f}, kk {kk_forced:.0f}; "
           f"automata in touch at most CPU {cpu['c_A'].max():.0f}, kk {kokkos['c_A'].max():.0f}")
