@@ -23,29 +23,9 @@ HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "hard_cases"))
 sys.path.insert(0, str(pathlib.Path(os.environ.get("MCA_ROOT", HERE.parents[1])) / "examples"
                        / "hard_cases"))
-from plate_analysis import pieces, read_snapshots  # noqa: E402
+from plate_analysis import pieces, read_snapshots, read_thermo  # noqa: E402
 
 R = 1.0e-3
-
-
-def thermo(path):
-    """The thermo columns of the last run of a log (warnings skipped)."""
-    lines = pathlib.Path(path).read_text().splitlines()
-    start = [k for k, line in enumerate(lines) if line.split()[:1] == ["Step"]][-1]
-    names = lines[start].split()
-    rows = []
-    for line in lines[start + 1:]:
-        if line.startswith("WARNING"):
-            continue
-        words = line.split()
-        if len(words) != len(names):
-            break
-        try:
-            rows.append([float(w) for w in words])
-        except ValueError:
-            break
-    data = np.array(rows)
-    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 def newest(pattern):
@@ -82,7 +62,7 @@ print(f"oblique impact: friction {d[-1, 4] / d[0, 6]:.4f}, dropped contacts left
       f"{d[-1, 5] / d[0, 6]:.2e}, balance {np.abs(d[:, 6] - d[0, 6]).max() / d[0, 6]:.2e}, "
       f"contacts at most {d[:, 7].max():.0f}")
 
-t = thermo(newest("log.impact_plate*"))
+t = read_thermo(newest("log.impact_plate*"))
 atoms = read_snapshots(HERE / "dump.impact.atoms")[-1][2]
 links = read_snapshots(HERE / "dump.impact.links")[-1][2]
 labels = pieces(atoms[:, 0], links)
@@ -99,7 +79,7 @@ print(f"impact on a plate: {t['c_f[1]'][-1]:.0f} links broken, {len(sizes)} piec
       f"{np.abs(t['v_balance']).max():.2e}")
 
 for path, colour in ((newest("log.packing.0.15*"), "C0"), (newest("log.packing.1.36*"), "C3")):
-    t = thermo(path)
+    t = read_thermo(path)
     factor = re.search(r"packing\.(\d+\.\d+)", path).group(1)
     balance = (t["v_etot"] - t["v_work"]) / t["v_work"][-1]
     pack_ax.plot(t["v_strain"], t["v_stress"] / 1e6, colour, label=f"stress, dt {factor} R/c_p")

@@ -1,8 +1,31 @@
 """Analysis of the notched plate (in.notched_plate): the pieces the intact
-links hold together, the crack path, the stable time step.  Used by plot.py
-and by unittest/python/test_hard_cases.py (numpy only)."""
+links hold together, the crack path, the stable time step; and the log
+reader of the examples' plots.  Used by plot.py, ../contacts/plot.py and
+unittest/python/test_hard_cases.py (numpy only)."""
 
 import numpy as np
+
+
+def read_thermo(path):
+    """The thermo output of the last run of a log file as a dict of numpy
+    arrays, warnings between its lines skipped (the examples' plots)."""
+    with open(path) as handle:
+        lines = handle.read().splitlines()
+    start = [k for k, line in enumerate(lines) if line.split()[:1] == ["Step"]][-1]
+    names = lines[start].split()
+    rows = []
+    for line in lines[start + 1:]:
+        if line.startswith("WARNING"):
+            continue
+        words = line.split()
+        if len(words) != len(names):
+            break
+        try:
+            rows.append([float(w) for w in words])
+        except ValueError:
+            break
+    data = np.array(rows)
+    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 def read_snapshots(path):

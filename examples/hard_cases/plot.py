@@ -17,28 +17,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from plate_analysis import plate_result  # noqa: E402
+from plate_analysis import plate_result, read_thermo  # noqa: E402
 
 HERE = pathlib.Path(__file__).resolve().parent
 
 
 def thermo(pattern):
     """The thermo output of the (last) run of the newest log matching
-    pattern, warnings between its lines skipped."""
-    path = sorted(glob.glob(str(HERE / pattern)))[-1]
-    lines = pathlib.Path(path).read_text().splitlines()
-    start = [k for k, line in enumerate(lines) if line.split()[:1] == ["Step"]][-1]
-    names = lines[start].split()
-    rows = []
-    for line in lines[start + 1:]:
-        if line.startswith("WARNING"):
-            continue
-        words = line.split()
-        if len(words) != len(names):
-            break
-        rows.append([float(w) for w in words])
-    data = np.array(rows)
-    return {name: data[:, k] for k, name in enumerate(names)}
+    pattern."""
+    return read_thermo(sorted(glob.glob(str(HERE / pattern)))[-1])
 
 
 def balance(t):
