@@ -178,6 +178,52 @@ def test_no_weld(build, tmp_path, case):
     assert rise > 0.9 * lift
 
 
+# the work criterion: the block yields under the press (yield 5 MPa,
+# hardening 1 GPa, pressed at 7 MPa), the plane stays elastic
+PLASTIC_BLOCK = (f"pair_coeff      2 2 E {E} nu {NU} rho 2700 yield 5e6 hardening 1e9\n"
+                 "compute         ep bottom mca/atom epsp\n"
+                 "compute         EP bottom reduce max c_ep")
+
+
+def test_work_criterion(build, tmp_path):
+    """heal p work w: a contact welds once one of its automata has done the
+    plastic work w per volume.  A probe press (no healing) gives the
+    largest plastic strain of the block's bottom at the end of the press,
+    eps_p, and so its plastic work density w_p = sigma_y eps_p + H eps_p^2/2
+    (linear hardening); with w = w_p / 2 the contacts weld, later than on
+    pressure alone, at the same steps on 2 ranks; with w = 2 w_p never."""
+    probe = press_pull(build, tmp_path / "probe", heal="heal no", parts="plasticity mises",
+                       outputs=PLASTIC_BLOCK, columns="c_EP")
+    press, _ = phases(probe)
+    eps = probe["c_EP"][press][-1]
+    w_p = 5e6 * eps + 0.5 * 1e9 * eps * eps
+    runs = {}
+    for factor in (0.5, 2.0):
+        runs[factor] = press_pull(build, tmp_path / f"w{factor}",
+                                  heal=f"heal {0.5 * PRESSURE} work {factor * w_p}",
+                                  parts="plasticity mises", outputs=PLASTIC_BLOCK, columns="c_EP")
+    pressure_only = press_pull(build, tmp_path / "pressure", heal=f"heal {0.5 * PRESSURE}",
+                               parts="plasticity mises", outputs=PLASTIC_BLOCK, columns="c_EP")
+    # on 2 ranks the plastic strain of a ghost automaton is that of the step
+    # (sent after the return): the same heals at the same steps
+    two = press_pull(build, tmp_path / "mpi2", heal=f"heal {0.5 * PRESSURE} work {0.5 * w_p}",
+                     parts="plasticity mises", outputs=PLASTIC_BLOCK, columns="c_EP", nprocs=2)
+
+    def first_heal(t):
+        return t["Step"][np.argmax(t["c_A[1]"] > 0)] if t["c_A[1]"].max() > 0 else None
+
+    print(f"\nwork criterion: the block's bottom reaches eps_p {eps:.3e}, w_p {w_p:.4e} J/m^3; "
+          f"healed with w = w_p/2: {runs[0.5]['c_A[1]'][-1]:.0f} (first at step "
+          f"{first_heal(runs[0.5])}), with 2 w_p: {runs[2.0]['c_A[1]'][-1]:.0f}; on pressure "
+          f"alone: first at step {first_heal(pressure_only)}")
+    assert eps > 0
+    assert runs[0.5]["c_A[1]"][-1] == 4
+    assert runs[2.0]["c_A[1]"].max() == 0
+    # the work comes after the pressure: the weld waits for it
+    assert first_heal(runs[0.5]) > first_heal(pressure_only)
+    assert np.array_equal(two["c_A[1]"], runs[0.5]["c_A[1]"])
+
+
 # the welds break: elliptic criterion on the plane-block pair with a
 # strength sigma0 well above the press (no break while pressed) and tau0
 STRENGTH = 40.0e6
