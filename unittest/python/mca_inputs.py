@@ -85,13 +85,14 @@ def fcc_radius(a):
     return a / (2.0 * math.sqrt(2.0))
 
 
-def block_on_plane(box, plane, block, top, atom_modify="map array"):
-    """The start of a scene of two bodies of an sc packing: a plane of
-    automata (type 1, group plane) and a block (type 2, group block) on it,
-    not linked unless the pair style says so, the block's layers above z =
-    top (lattice units) in group top; regions as 'xlo xhi ylo yhi zlo zhi'
-    in lattice units.  The text keeps the fields {spacing} (lattice
-    spacing 2R), {radius} and {skin} for the caller's format()."""
+def two_bodies(box, first, second, atom_modify="map array"):
+    """The start of a scene of two bodies of an sc packing: the automata of
+    the region first = (name, 'xlo xhi ylo yhi zlo zhi') of type 1, in the
+    group of that name, and those of second of type 2 (regions in lattice
+    units), not linked unless the pair style says so.  The text keeps the
+    fields {spacing} (lattice spacing 2R) and {radius} for the caller's
+    format(); CONTACT_NEIGHBOR follows the caller's own set-up."""
+    (name1, region1), (name2, region2) = first, second
     return f"""
 units           si
 atom_style      mca
@@ -100,16 +101,28 @@ boundary        f f f
 lattice         sc {{spacing}}
 region          box block {box}
 create_box      2 box
-region          plane block {plane}
-region          block block {block}
-create_atoms    1 region plane
-create_atoms    2 region block
+region          {name1} block {region1}
+region          {name2} block {region2}
+create_atoms    1 region {name1}
+create_atoms    2 region {name2}
 mca_set         all packing sc radius {{radius}}
-group           plane type 1
-group           block type 2
-region          top block INF INF INF INF {top} INF
-group           top region top
-comm_modify     vel yes
-neighbor        {{skin}} bin
+group           {name1} type 1
+group           {name2} type 2
+"""
+
+
+# ghost velocities and the neighbor settings contacts need (the field
+# {skin} for the caller's format())
+CONTACT_NEIGHBOR = """comm_modify     vel yes
+neighbor        {skin} bin
 neigh_modify    delay 0 every 1 check yes
 """
+
+
+def block_on_plane(box, plane, block, top, atom_modify="map array"):
+    """two_bodies: a plane (type 1, group plane) and a block (type 2, group
+    block) on it, the block's layers above z = top (lattice units) in
+    group top, and CONTACT_NEIGHBOR."""
+    return (two_bodies(box, ("plane", plane), ("block", block), atom_modify)
+            + f"region          top block INF INF INF INF {top} INF\n"
+            "group           top region top\n" + CONTACT_NEIGHBOR)

@@ -27,7 +27,7 @@ import pathlib
 import numpy as np
 import pytest
 
-from mca_inputs import block_on_plane
+from mca_inputs import CONTACT_NEIGHBOR, block_on_plane, two_bodies
 from mcatest import kokkos_args, read_dump, read_thermo
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -171,26 +171,11 @@ def test_stick_below_threshold(build, tmp_path):
 # 1), both free; they are 0.5 R apart (beyond reach, 0.2 R: the contacts
 # are made on the way, after ~ 1000 steps); the restart case writes a
 # restart file while they touch
-IMPACT = """
-units           si
-atom_style      mca
-atom_modify     map array sort 0 0
-boundary        f f f
-lattice         sc {spacing}
-region          box block -3 9 -3 9 -2 9
-create_box      2 box
-region          plate block -0.5 5.5 -0.5 5.5 -0.5 1.5
-region          cube block 1.5 4.5 1.5 4.5 2.75 5.25
-create_atoms    1 region plate
-create_atoms    2 region cube
-mca_set         all packing sc radius {radius}
-group           plate type 1
-group           cube type 2
+IMPACT = two_bodies("-3 9 -3 9 -2 9", ("plate", "-0.5 5.5 -0.5 5.5 -0.5 1.5"),
+                    ("cube", "1.5 4.5 1.5 4.5 2.75 5.25"), atom_modify="map array sort 0 0") + """\
 displace_atoms  cube move 0 0 {drop} units box
 velocity        cube set 3.0 1.0 -10.0 units box
-comm_modify     vel yes
-neighbor        {skin} bin
-neigh_modify    delay 0 every 1 check yes
+""" + CONTACT_NEIGHBOR + """\
 pair_style      mca contacts coulomb
 pair_coeff      * * E {E} nu {nu} rho 2700 friction 0.3
 pair_coeff      1 2 link no
@@ -618,28 +603,13 @@ def test_packing_kokkos_and_mpi(tmp_path):
 # of 6 x 6 x 2 (type 1, its bottom layer held), driven into it by fix move
 # at 0.5 m/s, or as a rigid body of fix rigid pushed by 8 x 10 N; they touch
 # through contacts only
-INDENTER = """
-units           si
-atom_style      mca
-atom_modify     map array
-boundary        f f f
-lattice         sc {spacing}
-region          box block -2 8 -2 8 -2 7
-create_box      2 box
-region          sample block -0.5 5.5 -0.5 5.5 -0.5 1.5
-region          tip block 1.5 3.5 1.5 3.5 1.5 3.5
-create_atoms    1 region sample
-create_atoms    2 region tip
-mca_set         all packing sc radius {radius}
-group           sample type 1
-group           tip type 2
+INDENTER = two_bodies("-2 8 -2 8 -2 7", ("sample", "-0.5 5.5 -0.5 5.5 -0.5 1.5"),
+                      ("tip", "1.5 3.5 1.5 3.5 1.5 3.5")) + """\
 displace_atoms  tip move 0 0 {gap} units box
 region          base block INF INF INF INF INF 0.5
 group           base region base
 group           free subtract sample base
-comm_modify     vel yes
-neighbor        {skin} bin
-neigh_modify    delay 0 every 1 check yes
+""" + CONTACT_NEIGHBOR + """\
 pair_style      mca contacts coulomb
 pair_coeff      * * E {E} nu {nu} rho 2700 friction 0.3
 pair_coeff      1 2 link {link}
