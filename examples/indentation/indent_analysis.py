@@ -171,13 +171,18 @@ def cavity_model(x):
 LATTICE_PERIOD = math.sqrt(2.0) * D   # of the (001) surface along x: the fcc lattice constant
 
 
+def last_periods(t, periods=1):
+    """Indices of the scratch's rows over its last lattice periods along x."""
+    slide = t["x_lens"] - t["x_lens"][0]
+    if slide.max() < periods * LATTICE_PERIOD:
+        raise ValueError("the scratch is shorter than the periods asked for")
+    return np.nonzero((slide >= slide.max() - periods * LATTICE_PERIOD) & (slide > 0.0))[0]
+
+
 def scratch_friction(t, periods=1):
     """F_x / F_N of the scratch over its last lattice periods along x (the
     ratio of the means), and half the range of the ratio there."""
-    if (t["x_lens"] - t["x_lens"][0]).max() < periods * LATTICE_PERIOD:
-        raise ValueError("the scratch is shorter than the periods asked for")
-    slide = t["x_lens"] - t["x_lens"][0]
-    keep = (slide >= slide.max() - periods * LATTICE_PERIOD) & (slide > 0.0)
+    keep = last_periods(t, periods)
     ratio = t["lateral"][keep] / t["load"][keep]
     return t["lateral"][keep].mean() / t["load"][keep].mean(), 0.5 * np.ptp(ratio)
 
@@ -188,13 +193,6 @@ def tabor_flow_stress(material, a, R):
     E, nu, sigma_y, H = MATERIALS[material]
     strain = 0.2 * a / R
     return 1.0 + H * max(0.0, strain - sigma_y / E) / sigma_y
-
-
-def facet_friction(mu, ploughing):
-    """F_x / F_N of a slider whose contacts face the motion at a mean slope
-    tan(theta) = ploughing (the ratio at mu = 0) and rub at mu:
-    (mu + tan theta) / (1 - mu tan theta)."""
-    return (mu + ploughing) / (1.0 - mu * ploughing)
 
 
 def lens_work(t):
@@ -210,13 +208,18 @@ def stored_and_dissipated(t):
     return t["ke"] + t["pe"] + t["plastic_work"] + t["friction"] + t["contact_work"]
 
 
+def energy_balance(t):
+    """Largest |stored and dissipated - lens work| over the largest work."""
+    work = lens_work(t)
+    return np.abs(stored_and_dissipated(t) - work).max() / work.max()
+
+
 def scratch_parts(t, periods=1):
     """F_x / F_N over the last lattice periods of the scratch split by the
     energy it went into: (friction part, ploughing part), each the energy
     over (mean F_N x slide); the ploughing part is what the normal forces
     of the contacts do (plastic work, elastic and kinetic energy)."""
-    slide = t["x_lens"] - t["x_lens"][0]
-    keep = np.nonzero((slide >= slide.max() - periods * LATTICE_PERIOD) & (slide > 0.0))[0]
+    keep = last_periods(t, periods)
     first, last = keep[0], keep[-1]
     scale = t["load"][keep].mean() * (t["x_lens"][last] - t["x_lens"][first])
     friction = t["friction"][last] - t["friction"][first]
