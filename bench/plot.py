@@ -14,7 +14,7 @@ with open(os.path.join(out, "bench.csv")) as f:
     rows = list(csv.DictReader(f))
 
 fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(13, 4))
-for style, marker in (("mca", "o"), ("granular", "s")):
+for style, marker in (("mca", "o"), ("granular", "s"), ("mca+pf", "D")):
     for ranks, ls in (("1", "-"), ("2", "--")):
         sel = [r for r in rows if r["style"] == style and r["ranks"] == ranks
                and r["geometry"] == "periodic"]
@@ -31,15 +31,16 @@ for style, marker in (("mca", "o"), ("granular", "s")):
         if ranks == "1":
             ax3.plot(atoms, [float(r["lammps_bytes_per_atom"]) / 1024 for r in sel],
                      marker=marker, label=f"{style} (LAMMPS estimate)")
-for ranks, ls in (("1", "-"), ("2", "--")):
-    mca = {r["n"]: r for r in rows
-           if r["style"] == "mca" and r["ranks"] == ranks and r["geometry"] == "periodic"}
-    gran = {r["n"]: r for r in rows if r["style"] == "granular" and r["ranks"] == ranks}
-    keys = [n for n in mca if n in gran]
-    if keys:
-        ax2.plot([int(mca[n]["atoms"]) for n in keys],
-                 [float(mca[n]["us_per_atom_step"]) / float(gran[n]["us_per_atom_step"])
-                  for n in keys], marker="o", ls=ls, label=f"{ranks} rank(s)")
+for label, marker in (("mca", "o"), ("mca+pf", "D")):
+    for ranks, ls in (("1", "-"), ("2", "--")):
+        mca = {r["n"]: r for r in rows
+               if r["style"] == label and r["ranks"] == ranks and r["geometry"] == "periodic"}
+        gran = {r["n"]: r for r in rows if r["style"] == "granular" and r["ranks"] == ranks}
+        keys = [n for n in mca if n in gran]
+        if keys:
+            ax2.plot([int(mca[n]["atoms"]) for n in keys],
+                     [float(mca[n]["us_per_atom_step"]) / float(gran[n]["us_per_atom_step"])
+                      for n in keys], marker=marker, ls=ls, label=f"{label}, {ranks} rank(s)")
 ax2.axhline(1.5, color="k", lw=1, ls=":", label="target 1.5")
 for ax in (ax1, ax2, ax3):
     ax.set_xscale("log")
@@ -47,7 +48,7 @@ for ax in (ax1, ax2, ax3):
     ax.legend(fontsize=8)
 ax1.set_ylabel("core-microseconds per automaton-step")
 ax1.set_title("cost (periodic box unless marked)")
-ax2.set_title("MCA / granular, periodic box")
+ax2.set_title("MCA / granular, periodic box (+pf: plasticity, fracture)")
 ax3.set_title("memory, 1 rank")
 ax2.set_ylabel("MCA / granular cost")
 ax3.set_ylabel("KiB per automaton")

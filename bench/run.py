@@ -1,8 +1,9 @@
 """MCA vs pair granular benchmark: microseconds per automaton-step and bytes
 per automaton for fcc packings of edge 10a, 20a and 40a (periodic boxes of
 4000, 32000, 256000 automata; MCA also as free cubes of 4631, 34461, 265721)
-on 1 core and 2 MPI ranks.  Both styles run in the same invocation, on the same lattice,
-with the same neighbour count and time step.
+on 1 core and 2 MPI ranks, and MCA with plasticity and fracture on (mca+pf,
+periodic boxes).  Both styles run in the same invocation, on the same
+lattice, with the same neighbour count and time step.
 
 Usage (lmp and mpirun on the PATH, e.g. eval "$(tools/mca env current)"):
     /usr/bin/python3 run.py [--sizes 10 20 40] [--ranks 1 2] [--steps N]
@@ -18,9 +19,14 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-# (style, geometry): the ratio is taken on the periodic box; the free cube
-# (the scene of the issue, MCA only) shows the cost of the surface
-RUNS = (("mca", "periodic"), ("granular", "periodic"), ("mca", "cube"))
+# (label, style, geometry, variables of in.mca): the ratio is taken on the
+# periodic box; the free cube (the scene of the issue, MCA only) shows the
+# cost of the surface; "mca+pf" is MCA with plasticity (von Mises, yield 2
+# MPa: the vibration yields the automata) and fracture (Drucker-Prager at
+# strengths it never reaches: every link judged every step) on
+RUNS = (("mca", "mca", "periodic", {}), ("granular", "granular", "periodic", {}),
+        ("mca", "mca", "cube", {}),
+        ("mca+pf", "mca", "periodic", {"plasticity": "mises", "fracture": "drucker_prager"}))
 # timed steps per size: about 10 s of MCA work per run on one core
 DEFAULT_STEPS = {10: 1000, 20: 200, 40: 40}
 
@@ -47,11 +53,13 @@ def parse_log(text):
             "sections": sections}
 
 
-def run_one(style, geometry, n, ranks, steps, outdir):
-    log = os.path.join(outdir, f"log.bench.{style}.{geometry}.n{n}.{ranks}")
+def run_one(label, style, geometry, n, ranks, steps, outdir, variables=None):
+    log = os.path.join(outdir, f"log.bench.{label}.{geometry}.n{n}.{ranks}")
     cmd = ["lmp", "-in", "in.bench", "-var", "style", style, "-var", "geometry", geometry,
            "-var", "n", str(n),
            "-var", "nsteps", str(steps), "-log", log, "-screen", "none"]
+    for key, value in (variables or {}).items():
+        cmd += ["-var", key, value]
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks)] + cmd
     # peak resident memory of the (first) process, from GNU time
@@ -81,13 +89,13 @@ def main():
         steps = args.steps or DEFAULT_STEPS.get(n, max(10, int(4e6 / (4 * n**3))))
         for ranks in args.ranks:
             per_style = {}
-            for style, geometry in RUNS:
-                r = run_one(style, geometry, n, ranks, steps, args.out)
+            for label, style, geometry, variables in RUNS:
+                r = run_one(label, style, geometry, n, ranks, steps, args.out, variables)
                 us = 1e6 * r["seconds"] * r["procs"] / (r["atoms"] * r["steps"])
                 bytes_per_atom = r["mem_mb_avg"] * r["procs"] * 2**20 / r["atoms"]
                 if geometry == "periodic":
-                    per_style[style] = us
-                row = {"style": style, "geometry": geometry, "n": n, "atoms": r["atoms"], "ranks": ranks,
+                    per_style[label] = us
+                row = {"style": label, "geometry": geometry, "n": n, "atoms": r["atoms"], "ranks": ranks,
                        "steps": r["steps"], "seconds": r["seconds"],
                        "us_per_atom_step": us,
                        "neighs_per_atom": r["neighs_per_atom"],
@@ -95,15 +103,16 @@ def main():
                        "peak_rss_mb_rank0": r["peak_rss_kb"] / 1024.0}
                 rows.append(row)
                 for name, sec in r["sections"].items():
-                    breakdown.append({"style": style, "geometry": geometry, "n": n, "ranks": ranks, "section": name,
+                    breakdown.append({"style": label, "geometry": geometry, "n": n, "ranks": ranks, "section": name,
                                       "us_per_atom_step":
                                       1e6 * sec * r["procs"] / (r["atoms"] * r["steps"]),
                                       "percent": 100.0 * sec / r["seconds"]})
-                print(f"{style:9s} {geometry:8s} n={n:3d} atoms={r['atoms']:7d} ranks={ranks} "
+                print(f"{label:9s} {geometry:8s} n={n:3d} atoms={r['atoms']:7d} ranks={ranks} "
                       f"{us:7.3f} us/atom-step (core-us) "
                       f"{bytes_per_atom:8.0f} B/atom  neighs/atom {r['neighs_per_atom']:.2f}",
                       flush=True)
-            print(f"          ratio mca/granular = {per_style['mca'] / per_style['granular']:.2f}",
+            print(f"          ratio mca/granular = {per_style['mca'] / per_style['granular']:.2f},"
+                  f" mca+pf/granular = {per_style['mca+pf'] / per_style['granular']:.2f}",
                   flush=True)
 
     with open(os.path.join(args.out, "bench.csv"), "w", newline="") as f:

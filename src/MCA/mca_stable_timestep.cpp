@@ -273,6 +273,11 @@ void MCAStableTimestep::cache_links(const Input &in)
   const int nlocal = d.nlocal;
   ends.clear();
   first.assign(nlocal + 1, 0);
+  // room for every row at once: grown by doubling, the table's last copy
+  // would touch up to twice its size (the peak memory of a run)
+  std::size_t rows = 0;
+  for (int i = 0; i < nlocal; i++) rows += d.nlinks(i);
+  ends.reserve(rows);
   MCALinkTangent t;
   int j;
   for (int i = 0; i < nlocal; i++) {
@@ -567,17 +572,20 @@ MCAStableTimestep::Result MCAStableTimestep::estimate(const Input &in, Comm *com
 
   const std::size_t n = 6 * static_cast<std::size_t>(nlocal);
   std::vector<double> start(n);
-  // random components (from the IDs), plus the same spin of every automaton
-  // with as much weight: the fastest mode of a packing is often a spin
-  // that alternates from step to step and varies slowly across it
-  std::vector<double> spin(n, 0.0);
-  for (int i = 0; i < nlocal; i++)
-    for (int k = 0; k < 6; k++) {
-      start[6 * i + k] = start_component(d.tag(i), k);
-      if (k >= 3) spin[6 * i + k] = sqrt_j[i];
-    }
-  const double random_norm = sqrt(dot(start, start)), spin_norm = sqrt(dot(spin, spin));
-  for (std::size_t q = 0; q < n; q++) start[q] = start[q] / random_norm + spin[q] / spin_norm;
+  {
+    // random components (from the IDs), plus the same spin of every
+    // automaton with as much weight: the fastest mode of a packing is
+    // often a spin that alternates from step to step and varies slowly
+    // across it (the spin vector is freed before the Lanczos vectors exist)
+    std::vector<double> spin(n, 0.0);
+    for (int i = 0; i < nlocal; i++)
+      for (int k = 0; k < 6; k++) {
+        start[6 * i + k] = start_component(d.tag(i), k);
+        if (k >= 3) spin[6 * i + k] = sqrt_j[i];
+      }
+    const double random_norm = sqrt(dot(start, start)), spin_norm = sqrt(dot(spin, spin));
+    for (std::size_t q = 0; q < n; q++) start[q] = start[q] / random_norm + spin[q] / spin_norm;
+  }
   const double norm = sqrt(dot(start, start));
   for (double &v : start) v /= norm;
 
