@@ -38,7 +38,9 @@ at different costs.
     bench/pareto.py                                  # about 6 minutes, 1 core
     bench/pareto.py --modes cpu cpu_mpi2 kk1 kk2 --lmp-kokkos $MCA_BUILD_KOKKOS/lmp
 
-Writes OUT.csv (one row a run), OUT.md (the runs, the Pareto front of each
+--repeat N runs the whole sweep N times and keeps each case's cheapest
+run (the errors are the same; the costs of a shared machine scatter).
+Writes OUT.csv (one row a case), OUT.md (the runs, the Pareto front of each
 panel and the cheapest run within 10, 3, 1, 0.3 and 0.1 %) and OUT.png
 (cost against error, a panel per error, the front drawn), the logs to
 WORK; default OUT bench/results/pareto.
@@ -304,6 +306,8 @@ def main():
     ap.add_argument("--work", default=None, help="directory of the logs (default OUT/)")
     ap.add_argument("--out", default=str(HERE / "results" / "pareto"))
     ap.add_argument("--reuse", action="store_true", help="analyse the runs already in WORK")
+    ap.add_argument("--repeat", type=int, default=1,
+                    help="runs of each case, the cheapest counts (the errors do not change)")
     args = ap.parse_args()
     if any(MODES[m][2] for m in args.modes) and not args.lmp_kokkos:
         ap.error("--modes kk1/kk2/kk_mpi2 need --lmp-kokkos")
@@ -313,6 +317,8 @@ def main():
     for m in args.wave_m:
         if m < 4 or m % 2:
             ap.error(f"--wave-m: {m} must be even and at least 4 (whole cells per wavelength)")
+    if args.repeat < 1:
+        ap.error(f"--repeat: {args.repeat} must be at least 1")
     for n in args.cube_n + args.plastic_n:
         if n < 2:
             ap.error(f"--cube-n/--plastic-n: {n} must be at least 2 (a grip layer, a gauge)")
@@ -321,18 +327,23 @@ def main():
     work = pathlib.Path(args.work) if args.work else out
     work.mkdir(parents=True, exist_ok=True)
 
-    rows = []
-    for scene in args.scenes:
-        for value in values[scene]:
-            for fraction in args.fractions:
-                for mode in args.modes:
-                    row = run_case(scene, value, fraction, mode, work, args.lmp, args.lmp_kokkos,
-                                   args.reuse)
-                    rows.append(row)
-                    print(f"{scene:8s} {SCENES[scene][1]}={value:3d} f={fraction:<4g} {mode:8s} "
-                          f"{row['automata']:7d} automata {row['steps']:6d} steps "
-                          f"{row['core_seconds']:9.3f} core-s  error {row['error']:.3e}",
-                          flush=True)
+    cases = [(scene, value, fraction, mode) for scene in args.scenes for value in values[scene]
+             for fraction in args.fractions for mode in args.modes]
+    best = {}
+    # the whole sweep again for each repeat (the drift of a shared machine
+    # then reaches every case alike); a case keeps its cheapest run
+    for repeat in range(1 if args.reuse else args.repeat):
+        for case in cases:
+            scene, value, fraction, mode = case
+            row = run_case(scene, value, fraction, mode, work, args.lmp, args.lmp_kokkos,
+                           args.reuse)
+            if case not in best or row["core_seconds"] < best[case]["core_seconds"]:
+                best[case] = row
+            print(f"{scene:8s} {SCENES[scene][1]}={value:3d} f={fraction:<4g} {mode:8s} "
+                  f"{row['automata']:7d} automata {row['steps']:6d} steps "
+                  f"{row['core_seconds']:9.3f} core-s  error {row['error']:.3e}"
+                  + (f"  (repeat {repeat + 1})" if args.repeat > 1 else ""), flush=True)
+    rows = [best[case] for case in cases]
     out.parent.mkdir(parents=True, exist_ok=True)
     with open(f"{out}.csv", "w", newline="") as f:
         columns = list(dict.fromkeys(k for r in rows for k in r))  # in the order of the rows

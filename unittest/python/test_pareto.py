@@ -22,8 +22,9 @@ errors and its front rest on, on small cases of its own scenes.
 * plastic: the yield stress of the plastic cube at n = 4 is within 1 %
   of sigma_y (-0.56 %), the post-yield slope within 1 % of E H/(E + H);
 * modes: 2 MPI ranks give the errors of 1 rank to round-off (1e-9);
-* the tool writes its table, CSV and plot, and bad arguments stop it with
-  a message that names the argument.
+* the tool writes its table, CSV and plot (with --repeat, each case's
+  cheapest run), and bad arguments stop it with a message that names the
+  argument.
 """
 
 import csv
@@ -111,7 +112,7 @@ def command(build, tmp_path, *args):
 
 def test_outputs(build, tmp_path):
     result = command(build, tmp_path, "--scenes", "wave", "--wave-m", "4", "6",
-                     "--fractions", "0.5", "0.9")
+                     "--fractions", "0.5", "0.9", "--repeat", "2")
     assert result.returncode == 0, result.stdout[-2000:] + result.stderr[-2000:]
     with open(tmp_path / "p.csv") as f:
         rows = list(csv.DictReader(f))
@@ -120,6 +121,12 @@ def test_outputs(build, tmp_path):
     table = (tmp_path / "p.md").read_text()
     assert "wave: phase speed against c_p" in table and "Cheapest within 10 %" in table
     assert (tmp_path / "p.png").stat().st_size > 10000
+    # each case's cheapest of its two runs (the sweep runs twice, in order)
+    runs = [float(line.split("core-s")[0].split()[-1]) for line in result.stdout.splitlines()
+            if line.startswith("wave ") and "(repeat " in line]
+    assert len(runs) == 8
+    for k, r in enumerate(rows):
+        assert float(r["core_seconds"]) == pytest.approx(min(runs[k], runs[k + 4]), abs=6e-4)
 
 
 @pytest.mark.parametrize("args, message", [
@@ -127,6 +134,7 @@ def test_outputs(build, tmp_path):
     (("--wave-m", "5"), "--wave-m: 5 must be even"),
     (("--cube-n", "1"), "--cube-n/--plastic-n: 1 must be at least 2"),
     (("--modes", "kk1"), "need --lmp-kokkos"),
+    (("--repeat", "0"), "--repeat: 0 must be at least 1"),
 ])
 def test_bad_arguments(build, tmp_path, args, message):
     result = command(build, tmp_path, *args)
