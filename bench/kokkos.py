@@ -47,13 +47,11 @@ def run_mode(mode, n, steps, outdir, repeat=1, name="kokkos"):
     return min(results, key=lambda r: r["us_wall"])
 
 
-def run_once(mode, n, steps, outdir, name="kokkos", lmp="lmp", variables=None):
+def run_mode_command(mode, lmp, args, cwd):
+    """Run lmp with its arguments args in a mode of MODES (the kk switches,
+    mpirun for several ranks, the threads in the environment)."""
     ranks, threads, kokkos = MODES[mode]
-    log = os.path.join(outdir, f"log.{name}.{mode}.n{n}")
-    cmd = [lmp, "-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
-           "-var", "n", str(n), "-var", "nsteps", str(steps), "-log", log, "-screen", "none"]
-    for key, value in (variables or {}).items():
-        cmd += ["-var", key, str(value)]
+    cmd = [lmp] + list(args)
     if kokkos:
         cmd += [a.format(threads=threads) for a in KK]
     if ranks > 1:
@@ -62,7 +60,17 @@ def run_once(mode, n, steps, outdir, name="kokkos", lmp="lmp", variables=None):
     # a copied shared-library build loads the library next to it
     env["LD_LIBRARY_PATH"] = os.path.dirname(os.path.abspath(lmp)) + ":" + env.get(
         "LD_LIBRARY_PATH", "") if os.sep in lmp else env.get("LD_LIBRARY_PATH", "")
-    subprocess.run(cmd, cwd=HERE, env=env, check=True)
+    subprocess.run(cmd, cwd=cwd, env=env, check=True)
+
+
+def run_once(mode, n, steps, outdir, name="kokkos", lmp="lmp", variables=None):
+    ranks, threads, _ = MODES[mode]
+    log = os.path.join(outdir, f"log.{name}.{mode}.n{n}")
+    args = ["-in", "in.bench", "-var", "style", "mca", "-var", "geometry", "cube",
+            "-var", "n", str(n), "-var", "nsteps", str(steps), "-log", log, "-screen", "none"]
+    for key, value in (variables or {}).items():
+        args += ["-var", key, str(value)]
+    run_mode_command(mode, lmp, args, HERE)
     with open(log) as f:
         result = parse_log(f.read())
     cores = ranks * threads

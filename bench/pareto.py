@@ -49,10 +49,8 @@ WORK; default OUT bench/results/pareto.
 import argparse
 import csv
 import math
-import os
 import pathlib
 import re
-import subprocess
 import sys
 
 import numpy as np
@@ -62,7 +60,7 @@ ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(ROOT / "examples" / "waves"))
 sys.path.insert(0, str(ROOT / "examples" / "plasticity"))
-from kokkos import KK, MODES  # noqa: E402
+from kokkos import MODES, run_mode_command  # noqa: E402
 from run import parse_log  # noqa: E402
 from dispersion_model import p_wave_speed_ratio  # noqa: E402
 from shear_model import bilinear_yield  # noqa: E402
@@ -182,19 +180,11 @@ def run_case(scene, value, fraction, mode, work, lmp, lmp_kokkos, reuse=False, n
     log = work / f"log.{label}"
     dat = work / (f"pareto_wave.{label}.dat" if scene == "wave" else f"pareto_cube.{label}.dat")
     if not (reuse and log.exists() and dat.exists()):
-        cmd = [exe, "-in", str(HERE / inp), "-var", knob, str(value), "-var", "f", str(fraction),
-               "-var", "label", label, "-log", str(log), "-screen", "none"]
+        args = ["-in", str(HERE / inp), "-var", knob, str(value), "-var", "f", str(fraction),
+                "-var", "label", label, "-log", str(log), "-screen", "none"]
         for key, val in fixed.items():
-            cmd += ["-var", key, val]
-        if kokkos:
-            cmd += [a.format(threads=threads) for a in KK]
-        if ranks > 1:
-            cmd = ["mpirun", "-np", str(ranks)] + cmd
-        env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false")
-        if os.sep in exe:  # a build directory: its shared library first
-            env["LD_LIBRARY_PATH"] = os.path.dirname(os.path.abspath(exe)) + ":" + env.get(
-                "LD_LIBRARY_PATH", "")
-        subprocess.run(cmd, cwd=work, env=env, check=True)
+            args += ["-var", key, val]
+        run_mode_command(mode, exe, args, work)
     text = log.read_text()
     timing = parse_log(text)
     done = re.findall(r"^PARETO \S+ .* dt (\S+) steps (\d+) atoms (\d+)", text, re.M)
@@ -241,15 +231,17 @@ def write_table(rows, path):
         mine = [r for r in rows if r["scene"] == scene]
         if not mine:
             continue
+        def run_name(r):
+            return f"{SCENES[scene][1]}{r['resolution']} f{r['fraction']:g} {r['mode']}"
+
         front = pareto_front([r["core_seconds"] for r in mine], [abs(r[column]) for r in mine])
+        cheapest = [(tol, cheapest_within(mine, column, tol)) for tol in TOLERANCES]
         lines.append(f"**{title}**: front " + ", ".join(
-            f"{SCENES[scene][1]}{mine[i]['resolution']} f{mine[i]['fraction']:g} "
-            f"{mine[i]['mode']} ({mine[i]['core_seconds']:.3g} core-s, {abs(mine[i][column]):.2g})"
-            for i in front) + ".  Cheapest within " + "; ".join(
-            f"{100 * tol:g} %: " + (lambda r: "none" if r is None else
-                                    f"{SCENES[scene][1]}{r['resolution']} f{r['fraction']:g} "
-                                    f"{r['mode']}, {r['core_seconds']:.3g} core-s")(
-                cheapest_within(mine, column, tol)) for tol in TOLERANCES) + ".")
+            f"{run_name(mine[i])} ({mine[i]['core_seconds']:.3g} core-s, "
+            f"{abs(mine[i][column]):.2g})" for i in front) + ".  Cheapest within " + "; ".join(
+            f"{100 * tol:g} %: " + ("none" if r is None else
+                                    f"{run_name(r)}, {r['core_seconds']:.3g} core-s")
+            for tol, r in cheapest) + ".")
         lines.append("")
     path.write_text("\n".join(lines))
 
