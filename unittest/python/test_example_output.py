@@ -3,6 +3,7 @@
 
 * every MCA example input writes snapshots with the documented columns and,
   at its end, the final state and (where the build writes PNG) a picture;
+  so do the GP wave scenes and the GP crack plate (its final state);
 * on the tension cube (3 cells, 60 steps) the snapshots come every
   ceil(nsteps/20) steps, sorted by ID, with the columns a reader maps by
   name; the columns are what they say: c_vis[7] is the von Mises stress
@@ -37,6 +38,25 @@ def test_every_mca_example_writes_snapshots_and_a_picture(path):
     assert re.search(r"^dump +visfinal all custom 1 \S+\.final\.dump ", text, re.M)
     assert re.search(r'if "\$\(is_available\(feature,png\)\)" then &\n  "write_dump all image '
                      r'\S+\.png c_vis\[[78]\] diameter', text)
+
+
+GP_INPUTS = [EXAMPLES / "gp_scaling" / "in.wave", EXAMPLES / "gp_interface" / "in.wave",
+             EXAMPLES / "gp_crack" / "in.tension"]
+
+
+@pytest.mark.parametrize("path", GP_INPUTS, ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_gp_examples_write_their_final_state_and_a_picture(path):
+    """The GP scenes: snapshots of the dynamic ones with each particle's
+    energy (compute pe/atom) and level (type), the final state and a
+    picture (coloured by the energy; the crack plate by the level)."""
+    text = path.read_text()
+    assert re.search(r"^compute +vispe all pe/atom$", text, re.M)
+    assert re.search(r"^dump +visfinal all custom 1 \S+\.final\.dump id type x y z ", text, re.M)
+    assert re.search(r'if "\$\(is_available\(feature,png\)\)" then &\n  "write_dump all image '
+                     r'\S+\.png (c_vispe|type) type view', text)
+    if path.parent.name != "gp_crack":
+        assert re.search(r'"dump vis all custom \$\{visevery\} \S+\.\*\.dump id type x y z '
+                         r'vx vy vz c_vispe"', text)
 
 
 def png_size(path):
