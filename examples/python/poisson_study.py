@@ -15,7 +15,7 @@ grip's stress, writes one CSV row per run and draws the study.
 Needs the LAMMPS Python module of a build with the MCA package on the
 PYTHONPATH and its shared library on LD_LIBRARY_PATH
 (eval "$(tools/mca env current)" sets both).  Output: DIR/poisson_study.csv,
-DIR/poisson_study.png (DIR default: the working directory).
+DIR/poisson_study.png, DIR/cube.nu<nu>.dump (DIR default: the working directory).
 """
 
 import argparse
@@ -83,7 +83,7 @@ variable        lateral equal (xcm(xhi,x)-xcm(xlo,x))/v_W0-1.0
     return a, dt
 
 
-def run_case(lammps_module, nu, n, fraction):
+def run_case(lammps_module, nu, n, fraction, out):
     """One run; the histories and the final per-automaton stress as numpy arrays."""
     lmp = lammps_module.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
     try:
@@ -99,6 +99,9 @@ def run_case(lammps_module, nu, n, fraction):
             lateral.append(lmp.extract_variable("lateral"))
             # fix mca/setvelocity: the force the grip applies, a global 3-vector
             reaction.append([lmp.extract_fix("top", 0, 1, k) for k in range(3)])
+        # the final state for OVITO or ParaView (the examples' snapshot columns)
+        lmp.command(f"write_dump all custom {out}/cube.nu{nu:g}.dump id type x y z vx vy vz "
+                    "radius c_stress[*] modify sort id")
         nlocal = lmp.extract_global("nlocal")
         z = lmp.numpy.extract_atom("x")[:nlocal, 2].copy()
         x = lmp.numpy.extract_atom("x")[:nlocal, 0].copy()
@@ -176,7 +179,7 @@ def main(argv=None):
     args.out.mkdir(parents=True, exist_ok=True)
     cases = []
     for nu in args.nu:
-        cases.append(run_case(lammps_module, nu, args.n, args.fraction))
+        cases.append(run_case(lammps_module, nu, args.n, args.fraction, args.out))
         print(f"STUDY nu {nu:g}: {cases[-1]['natoms']} automata, {len(cases[-1]['time'])} chunks",
               flush=True)
     rows = [fit(c) for c in cases]

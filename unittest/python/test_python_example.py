@@ -8,7 +8,8 @@ apparent E is 0.82 % low and nu 0.25 % low): the apparent E within 1.5 % of
 mean stress of the interior automata (compute mca/atom, read as a numpy
 array) within 5 % of the grip's stress (the stress of the uniform state
 the loading approaches; the cube still rings about it); a CSV row per run
-and the plot; bad arguments refused with the reason.
+and the plot, the final state of each run as a dump sorted by ID; bad
+arguments refused with the reason.
 """
 
 import csv
@@ -16,6 +17,7 @@ import os
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 import mcatest
@@ -50,6 +52,9 @@ def test_poisson_study_finds_the_continuum_moduli(tmp_path):
         assert abs(float(r["inner_vs_grip"])) < 0.05, r
         assert int(r["inner_automata"]) > 0
     assert (tmp_path / "poisson_study.png").stat().st_size > 10000
+    final = mcatest.read_dump(tmp_path / "cube.nu0.3.dump")[-1]
+    assert len(final["id"]) == 365 and np.all(np.diff(final["id"]) > 0)
+    assert np.mean(final["c_stress[3]"]) > 0.0    # pulled along z, tension positive
 
 
 @pytest.mark.parametrize("args, message", [
