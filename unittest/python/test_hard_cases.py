@@ -39,7 +39,9 @@ NOTCH_Y = (PLATE["ny"] / 2 - 0.25) * A
 
 
 def plate(build, directory, factor, nsteps, every, dumps=4, extra_args=()):
-    variables = dict(PLATE, factor=factor, nsteps=nsteps, every=every, dumps=dumps)
+    # visevery 0: no snapshots and no final-state run 0, whose thermo would
+    # be the last in the log
+    variables = dict(PLATE, factor=factor, nsteps=nsteps, every=every, dumps=dumps, visevery=0)
     build.run((EXAMPLE / "in.notched_plate").read_text(), directory, variables=variables,
               name="in.notched_plate", extra_args=extra_args)
     return read_thermo(directory / "log.lammps")
