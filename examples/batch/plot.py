@@ -33,7 +33,8 @@ def energies():
 def segment_starts():
     starts = []
     for log in sorted(WORK.glob("log.chain.*"), key=lambda p: int(p.suffix[1:])):
-        m = re.search(r"Current step\s*:\s*(\d+)", log.read_text().split("Displacing atoms")[-1])
+        # the first thermo line of the segment's run (the header with Time)
+        m = re.search(r"^\s*Step\s+Time\b.*\n\s*(\d+)\s", log.read_text(), re.M)
         if m:
             starts.append(int(m.group(1)))
     return starts

@@ -103,9 +103,7 @@ def run_case(lammps_module, nu, n, fraction, out):
         lmp.command(f"write_dump all custom {out}/cube.nu{nu:g}.dump id type x y z vx vy vz "
                     "radius c_stress[*] modify sort id")
         nlocal = lmp.extract_global("nlocal")
-        z = lmp.numpy.extract_atom("x")[:nlocal, 2].copy()
-        x = lmp.numpy.extract_atom("x")[:nlocal, 0].copy()
-        y = lmp.numpy.extract_atom("x")[:nlocal, 1].copy()
+        x, y, z = lmp.numpy.extract_atom("x")[:nlocal].T.copy()
         stress = lmp.numpy.extract_compute("stress", 1, 2)[:nlocal].copy()    # per atom, array
         natoms = lmp.get_natoms()
     finally:
