@@ -12,8 +12,10 @@ with both executables in each mode:
 (kk modes only if both builds list mca/kk in lmp -h).  Before the run a dump
 of id, type, x, image, v, f, omega, torque and the compute mca/atom values
 (scenes with pair mca) every nsteps/4 steps and thermo every nsteps/10, both
-%.17g, are added.  Compared byte for byte: the thermo lines of the log and
-every file the run writes (the dump, the examples' .dat files and dumps).
+%.17g, are added, and after the run the estimate of the stable time step
+(compute mca/timestep: dt_c, omega, zeta, %.17g).  Compared byte for byte:
+the thermo lines of the log, that estimate and every file the run writes
+(the dump, the examples' .dat files).
 Where they differ, each numeric column's max absolute difference and that
 over the column's largest |value| (relative) are reported.  A scene that
 fails in both builds (rolling on LAMMPS 2021: fix wall/gran needs atom_style
@@ -71,13 +73,23 @@ thermo_modify   format float %.17g
 def scene_input(path, nsteps, extra=""):
     """The example's input with the dump before its last run, run for nsteps."""
     lines = open(os.path.join(EXAMPLES, path)).read().splitlines()
-    last = max(i for i, line in enumerate(lines) if re.match(r"\s*run\s", line))
-    mca = re.search(r"^\s*pair_style\s+mca\s*$", "\n".join(lines), re.M)
+    # the last run of the scene (not the run 0 of the examples' final state)
+    last = max(i for i, line in enumerate(lines)
+               if re.match(r"\s*run\s", line) and not re.match(r"\s*run\s+0\s+post\s+no", line))
+    mca = re.search(r"^\s*pair_style\s+mca(\s|$)", "\n".join(lines), re.M)
     dump = DUMP.format(every=max(1, nsteps // 4), thermo=max(1, nsteps // 10),
                        mca_atom=MCA_ATOM, columns="c_bitwise_mca[*]" if mca else "")
     if not mca:
         dump = dump.split("\n", 1)[1]
-    return "\n".join(lines[:last] + [dump + extra, f"run {nsteps}"] + lines[last + 1:]) + "\n"
+    # the estimate of the stable time step to the last bit, as at the last
+    # step of the run (a fix keeps it: LAMMPS 2021 reads no compute between runs)
+    if mca:
+        dump += ("compute         bitwise_dt all mca/timestep\n"
+                 "fix             bitwise_dt all ave/time 1 1 1 c_bitwise_dt[*]\n")
+    estimate = ['print "BITWISE stable time step $(f_bitwise_dt[1]:%.17g) omega '
+                '$(f_bitwise_dt[4]:%.17g) zeta $(f_bitwise_dt[5]:%.17g)"'] if mca else []
+    return "\n".join(lines[:last] + [dump + extra, f"run {nsteps}"] + estimate +
+                     lines[last + 1:]) + "\n"
 
 
 def environment(lmp, threads):
@@ -97,6 +109,16 @@ def has_kokkos(lmp):
     return "mca/kk" in out.stdout.split()
 
 
+def read_output(path):
+    """A file the run wrote: its text, or its bytes if it is not text (the
+    examples' pictures)."""
+    data = open(path, "rb").read()
+    try:
+        return data.decode()
+    except UnicodeDecodeError:
+        return data
+
+
 def run(lmp, scene, mode, nsteps, cwd, extra=""):
     """Run one scene in cwd; return {output name: text} or an error message."""
     path, variables = SCENES[scene]
@@ -105,7 +127,8 @@ def run(lmp, scene, mode, nsteps, cwd, extra=""):
     os.makedirs(cwd)
     with open(os.path.join(cwd, "in.scene"), "w") as f:
         f.write(scene_input(path, nsteps, extra))
-    cmd = [lmp, "-in", "in.scene", "-log", "log.lammps", "-nocite"]
+    # without the examples' snapshots, final state and picture
+    cmd = [lmp, "-in", "in.scene", "-log", "log.lammps", "-nocite", "-var", "visevery", "0"]
     for key, value in variables.items():
         cmd += ["-var", key, str(value)]
     if kokkos:
@@ -121,12 +144,13 @@ def run(lmp, scene, mode, nsteps, cwd, extra=""):
         text = [l.strip() for l in (proc.stdout + proc.stderr).splitlines()
                 if re.search("[a-z]", l)]
         return ([l for l in text if "ERROR" in l] + text + ["failed"])[0]
-    outputs = {name: open(os.path.join(cwd, name)).read() for name in os.listdir(cwd)
+    outputs = {name: read_output(os.path.join(cwd, name)) for name in os.listdir(cwd)
                if name not in ("in.scene", "log.lammps")}
     thermo, inside = [], False
     for line in open(os.path.join(cwd, "log.lammps")).read().splitlines():
         inside = (inside or line.split()[:1] == ["Step"]) and not line.startswith("Loop time")
-        if inside:
+        # and pair mca's estimate of the stable time step, printed after it
+        if inside or line.startswith("BITWISE stable time step"):
             thermo.append(line)
     outputs["thermo"] = "\n".join(thermo)
     return outputs
@@ -175,8 +199,12 @@ def compare(base, new):
     for name in sorted(set(base) | set(new)):
         if base.get(name) == new.get(name):
             continue
-        text, rel = (column_diffs(base[name], new[name]) if name in base and name in new
-                     else ("written by one build only", float("inf")))
+        if name not in base or name not in new:
+            text, rel = "written by one build only", float("inf")
+        elif isinstance(base[name], bytes) or isinstance(new[name], bytes):
+            text, rel = "binary files differ", float("inf")
+        else:
+            text, rel = column_diffs(base[name], new[name])
         details.append(f"{name}: {text}")
         worst = max(worst, rel)
     return not details, worst, details

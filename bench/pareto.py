@@ -19,7 +19,11 @@ finely; inputs bench/in.pareto_cube and bench/in.pareto_wave):
            dispersion (the MCA relation of examples/waves, exact for the
            law in space) and the rest (the time step); and the largest
            deviation of the total energy from its initial value, relative
-           (energy error, a panel of its own)
+           (energy error, a panel of its own); and the loss of amplitude
+           per period of the mode's projection (a damped sinusoid fitted to it)
+           (amplitude error, a panel of its own: the law is elastic, the
+           energy the code prints is the work done along the path and does
+           not show a loss, doc/src/pair_mca.rst)
   plastic  the same cube past yield (von Mises, sigma_y = 2 MPa, linear
            hardening H = 10 GPa, examples/plasticity V3): the yield stress
            where the lines fitted to the elastic and post-yield parts meet,
@@ -77,7 +81,8 @@ SCENES = {  # name: input, resolution variable, its default values, fixed variab
 PANELS = (("cube", "error", "cube: apparent E and nu"),
           ("plastic", "error", "plastic cube: yield stress"),
           ("wave", "error", "wave: phase speed against c_p"),
-          ("wave", "energy_error", "wave: total energy"))
+          ("wave", "energy_error", "wave: total energy"),
+          ("wave", "amplitude_error", "wave: amplitude lost per period"))
 TOLERANCES = (0.1, 0.03, 0.01, 0.003, 0.001)
 
 
@@ -115,6 +120,23 @@ def zero_crossings(t, amp):
     return t[i] - amp[i] * (t[i + 1] - t[i]) / (amp[i + 1] - amp[i])
 
 
+def amplitude_loss(t, amp):
+    """Fraction of the amplitude lost per period (negative: a gain) of a
+    mode sampled at equal intervals: the two-term linear recurrence
+    amp[k+1] = a amp[k] + b amp[k-1] fitted by least squares (Prony's
+    method; exact for a damped sinusoid at any sampling interval, also at
+    a few samples a period), whose roots r exp(+-i theta) give the loss
+    1 - r^(2 pi / theta)."""
+    if not np.allclose(np.diff(t), t[1] - t[0], rtol=1e-6, atol=0.0):
+        raise RuntimeError("the amplitude is not sampled at equal intervals")
+    (a, b), *_ = np.linalg.lstsq(np.column_stack((amp[1:-1], amp[:-2])), amp[2:], rcond=None)
+    if b >= 0 or a * a + 4 * b >= 0:
+        raise RuntimeError(f"the amplitude is not a damped oscillation (recurrence {a:g}, {b:g})")
+    r = math.sqrt(-b)
+    theta = math.acos(a / (2 * r))
+    return 1.0 - r ** (2 * math.pi / theta)
+
+
 def verlet_speed_ratio(omega, dt):
     """Frequency velocity Verlet gives a mode of angular frequency omega,
     over omega: sin(w dt/2) = omega dt/2 (a mode is faster by about
@@ -125,7 +147,8 @@ def verlet_speed_ratio(omega, dt):
 
 def wave_errors(path, m, dt, nu=NU):
     """Phase speed of the standing wave against c_p and the MCA dispersion
-    relation, and the largest deviation of the total energy."""
+    relation, the largest deviation of the total energy and the loss of
+    amplitude per period."""
     t, amp, etot = np.loadtxt(path, unpack=True)
     crossings = zero_crossings(t, amp)
     if len(crossings) < 3:
@@ -137,9 +160,11 @@ def wave_errors(path, m, dt, nu=NU):
     law = p_wave_speed_ratio(m, nu)
     verlet = verlet_speed_ratio(2 * math.pi * law * c_p / WAVELENGTH, dt)
     energy = np.max(np.abs(etot - etot[0])) / etot[0]
+    loss = amplitude_loss(t, amp)
     return {"error": abs(speed - 1.0), "speed_error": speed - 1.0,
             "law_speed_error": law - 1.0, "time_speed_error": speed / law - 1.0,
-            "verlet_speed_error": verlet - 1.0, "energy_error": energy}
+            "verlet_speed_error": verlet - 1.0, "energy_error": energy,
+            "amplitude_loss": loss, "amplitude_error": abs(loss)}
 
 
 ANALYSE = {"cube": lambda row, dat: cube_errors(dat), "plastic": lambda row, dat: plastic_errors(dat),
@@ -215,7 +240,7 @@ def write_table(rows, path):
             continue
         extra = {"cube": ("E_error", "nu_error"), "plastic": ("yield_error", "tangent_error"),
                  "wave": ("speed_error", "law_speed_error", "time_speed_error",
-                          "verlet_speed_error", "energy_error")}[scene]
+                          "verlet_speed_error", "energy_error", "amplitude_loss")}[scene]
         lines += [f"## {scene}", "",
                   f"| {knob} | automata | f | mode | steps | core-s | us / automaton-step | " +
                   " | ".join(extra) + " |", "|---" * (7 + len(extra)) + "|"]
@@ -253,7 +278,9 @@ def plot(rows, path):
     markers = {"cpu": "o", "cpu_mpi2": "s", "kk1": "^", "kk2": "v", "kk_mpi2": "D"}
     fractions = sorted({r["fraction"] for r in rows})
     colors = {f: plt.cm.viridis(i / max(1, len(fractions) - 1)) for i, f in enumerate(fractions)}
-    fig, axes = plt.subplots(2, 2, figsize=(11, 8.5))
+    fig, axes = plt.subplots(2, 3, figsize=(15, 8.5))
+    for ax in axes.flat[len(PANELS):]:
+        ax.set_visible(False)
     for ax, (scene, column, title) in zip(axes.flat, PANELS):
         mine = [r for r in rows if r["scene"] == scene]
         if not mine:

@@ -254,39 +254,47 @@ void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j, MCALin
                t);
 }
 
-// a link between two local automata is counted by the lower ID; one to a
-// ghost atom half by each of the two processors that own its automata
-double MCAStableTimestep::link_weight(const Input &in, int i, int j) const
+double MCAStableTimestep::end_weight(const Input &in, const LinkEnd &e) const
 {
-  if (j < in.links.nlocal) return in.links.tag(i) < in.links.tag(j) ? 1.0 : 0.0;
-  return 0.5;
+  if (e.j >= in.links.nlocal) return 0.5;
+  return e.entry >= 0 ? 1.0 : 0.0;
 }
 
 /* ----------------------------------------------------------------------
    the links that act, with all the estimate needs of them (the inverse
-   fabric tensors and predictor stiffnesses of the ghosts are known)
+   fabric tensors and predictor stiffnesses of the ghosts are known): an
+   entry made by the end that owns the link (the lower ID of two local
+   automata, the local one of a link to a ghost), then the ends of each
+   automaton in the order of its rows
 ------------------------------------------------------------------------- */
 
 void MCAStableTimestep::cache_links(const Input &in)
 {
   const MCAHostLinks &d = in.links;
   const int nlocal = d.nlocal;
+  entries.clear();
   ends.clear();
   first.assign(nlocal + 1, 0);
-  // room for every row at once: grown by doubling, the table's last copy
-  // would touch up to twice its size (the peak memory of a run)
-  std::size_t rows = 0;
-  for (int i = 0; i < nlocal; i++) rows += d.nlinks(i);
-  ends.reserve(rows);
+  // where each automaton's rows start in the list of all rows, and the
+  // entry each owned row made (-1: none, the link does not act); room for
+  // every row at once (grown by doubling, the last copy of a table would
+  // touch up to twice its size: the peak memory of a run)
+  std::vector<int> row_start(nlocal + 1, 0);
+  for (int i = 0; i < nlocal; i++) row_start[i + 1] = row_start[i] + d.nlinks(i);
+  std::vector<int> row_entry(row_start[nlocal], -1);
+  std::size_t owned = 0;
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < d.nlinks(i); m++)
+      if (!partner_evaluates(d, i, d.partner(i, m))) owned++;
+  entries.reserve(owned);
   MCALinkTangent t;
   int j;
-  for (int i = 0; i < nlocal; i++) {
-    first[i] = static_cast<int>(ends.size());
+  for (int i = 0; i < nlocal; i++)
     for (int m = 0; m < d.nlinks(i); m++) {
+      if (partner_evaluates(d, i, d.partner(i, m))) continue;
       tangent_of(in, i, m, j, t);
       if (!t.linked && t.kn == 0.0) continue;
-      LinkEnd e;
-      e.j = j;
+      LinkEntry e;
       e.flags = t.linked ? LINKED : 0;
       for (int k = 0; k < 3; k++) e.n[k] = static_cast<float>(t.n[k]);
       e.q_i = t.q_i;
@@ -310,32 +318,62 @@ void MCAStableTimestep::cache_links(const Input &in)
       const double gamma_j = dot3(fn, t.n) / 3.0;
       e.jacobi_fwd = t.linked ? gamma_i * t.a_j / (t.area * in.material[in.type[j]].bulk) : 0.0;
       e.jacobi_tr = t.linked ? gamma_j * t.a_i / (t.area * in.material[in.type[i]].bulk) : 0.0;
-      e.weight = link_weight(in, i, j);
-      ends.push_back(e);
+      row_entry[row_start[i] + m] = static_cast<int>(entries.size());
+      entries.push_back(e);
+    }
+
+  // each automaton's ends, in the order of its rows; the other end of a
+  // local pair finds the entry through the partner's row of the link
+  auto entry_of = [&](int i, int m) {
+    const int jj = d.partner(i, m);
+    if (!partner_evaluates(d, i, jj)) return row_entry[row_start[i] + m];
+    const int made = row_entry[row_start[jj] + d.row(i, m)];
+    return made >= 0 ? swapped_entry(made) : -1;
+  };
+  std::size_t acting = 0;
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < d.nlinks(i); m++)
+      if (entry_of(i, m) != -1) acting++;
+  ends.reserve(acting);
+  for (int i = 0; i < nlocal; i++) {
+    first[i] = static_cast<int>(ends.size());
+    for (int m = 0; m < d.nlinks(i); m++) {
+      const int entry = entry_of(i, m);
+      if (entry != -1) ends.push_back({d.partner(i, m), entry});
     }
   }
   first[nlocal] = static_cast<int>(ends.size());
 }
 
-MCALinkTangent MCAStableTimestep::tangent(const LinkEnd &e) const
+MCALinkTangent MCAStableTimestep::tangent(const LinkEnd &end) const
 {
+  const bool swapped = end.entry < 0;
+  const LinkEntry &e = entries[swapped ? swapped_entry(end.entry) : end.entry];
   MCALinkTangent t;
-  for (int k = 0; k < 3; k++) t.n[k] = e.n[k];
-  t.q_i = e.q_i;
-  t.q_j = e.q_j;
+  for (int k = 0; k < 3; k++) t.n[k] = swapped ? -e.n[k] : e.n[k];
+  t.q_i = swapped ? e.q_j : e.q_i;
+  t.q_j = swapped ? e.q_i : e.q_j;
   t.kn = e.kn;
   t.kt = e.kt;
   t.kb = e.kb;
-  t.a_i = e.a_i;
-  t.a_j = e.a_j;
-  t.beta_i = e.beta_i;
-  t.beta_j = e.beta_j;
+  t.a_i = swapped ? e.a_j : e.a_i;
+  t.a_j = swapped ? e.a_i : e.a_j;
+  t.beta_i = swapped ? e.beta_j : e.beta_i;
+  t.beta_j = swapped ? e.beta_i : e.beta_j;
   t.damp = e.damp;
   t.inv_cn = e.inv_cn;
   t.inv_ct = e.inv_ct;
   t.linked = (e.flags & LINKED) != 0;
   t.area = t.w_i = t.w_j = 0.0;
   return t;
+}
+
+void MCAStableTimestep::jacobi_weights(const LinkEnd &end, double &fwd, double &tr) const
+{
+  const bool swapped = end.entry < 0;
+  const LinkEntry &e = entries[swapped ? swapped_entry(end.entry) : end.entry];
+  fwd = swapped ? e.jacobi_tr : e.jacobi_fwd;
+  tr = swapped ? e.jacobi_fwd : e.jacobi_tr;
 }
 
 double MCAStableTimestep::dot(const std::vector<double> &a, const std::vector<double> &b) const
@@ -392,8 +430,8 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
     double s = 0.0, r = 0.0, q = 0.0, w = 0.0;
     for (int k = first[i]; k < first[i + 1]; k++) {
       const LinkEnd &e = ends[k];
-      if (!(e.flags & LINKED)) continue;
       const MCALinkTangent t = tangent(e);
+      if (!t.linked) continue;
       const int j = e.j;
       double dr, slip[3], fn[3];
       tangent_motion(t, motion[i], motion[i] + 3, motion[j], motion[j] + 3, dr, slip);
@@ -427,8 +465,10 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
       double off_f = 0.0, off_t = 0.0;
       for (int k = first[i]; k < first[i + 1]; k++) {
         const LinkEnd &e = ends[k];
-        off_f += e.jacobi_fwd * sums[e.j][0];
-        off_t += e.jacobi_tr * sums[e.j][1];
+        double w_fwd, w_tr;
+        jacobi_weights(e, w_fwd, w_tr);
+        off_f += w_fwd * sums[e.j][0];
+        off_t += w_tr * sums[e.j][1];
       }
       next[2 * i] = (rhs_fwd[i] - off_f) / diag[i];
       next[2 * i + 1] = (rhs_tr[i] - off_t) / diag[i];
@@ -564,7 +604,7 @@ MCAStableTimestep::Result MCAStableTimestep::estimate(const Input &in, Comm *com
 
   // the links that act
   double acting = 0.0;
-  for (const LinkEnd &e : ends) acting += e.weight;
+  for (const LinkEnd &e : ends) acting += end_weight(in, e);
   double acting_all = 0.0;
   MPI_Allreduce(&acting, &acting_all, 1, MPI_DOUBLE, MPI_SUM, world);
   res.nlinks = static_cast<bigint>(acting_all + 0.5);
@@ -650,6 +690,7 @@ MCAStableTimestep::Result MCAStableTimestep::estimate(const Input &in, Comm *com
   res.dt = (res.omega > 0.0) ? critical_timestep(res.omega, res.zeta)
                              : std::numeric_limits<double>::infinity();
   // the tangents are made again for the next estimate
+  std::vector<LinkEntry>().swap(entries);
   std::vector<LinkEnd>().swap(ends);
   return res;
 }
@@ -667,12 +708,13 @@ double MCAStableTimestep::damping_ratio(const Input &in, Comm *comm, const std::
   for (int i = 0; i < in.links.nlocal; i++)
     for (int k = first[i]; k < first[i + 1]; k++) {
       const LinkEnd &e = ends[k];
-      if (e.weight == 0.0) continue;
+      const double weight = end_weight(in, e);
+      if (weight == 0.0) continue;
       const MCALinkTangent t = tangent(e);
       double energy, dissipation;
       tangent_energy(t, motion[i], motion[i] + 3, motion[e.j], motion[e.j] + 3, energy,
                      dissipation);
-      damping += e.weight * dissipation;
+      damping += weight * dissipation;
     }
   MPI_Allreduce(&damping, &all, 1, MPI_DOUBLE, MPI_SUM, world);
   return omega > 0.0 ? all / (2.0 * omega) : 0.0;

@@ -100,17 +100,28 @@ class MCAStableTimestep : protected Pointers {
   // diagonal of the mean-stress systems, the next Jacobi iterate
   std::vector<double> sqrt_m, sqrt_j, rhs_fwd, rhs_tr, diag, next;
 
-  // the links of the local automata that act, each seen from its local
-  // automaton, kept for the Lanczos steps of one estimate in single
-  // precision (an estimate to 1e-4 needs no more; half the memory)
-  struct LinkEnd {
-    int j;        // the partner (local or ghost index)
-    int flags;    // LINKED: a link (not a broken pair); COUNT: this end counts the link in sums
+  // the links of the local automata that act, kept for the Lanczos steps
+  // of one estimate in single precision (an estimate to 1e-4 needs no
+  // more; half the memory).  A link between two local automata is stored
+  // once, seen from its lower ID; a link to a ghost once, seen from the
+  // local automaton.  The other end reads the same entry swapped: its
+  // normal reversed, the two sides exchanged (exactly what its own row
+  // gives: every value below is symmetric in the sides)
+  struct LinkEntry {
+    int flags;    // LINKED: a link (not a broken pair)
     float n[3], q_i, q_j, kn, kt, kb, a_i, a_j, beta_i, beta_j, damp, inv_cn, inv_ct;
     float jacobi_fwd, jacobi_tr;    // weights of the partner's mean stress in the two systems
-    float weight;    // 1, 1/2 or 0: share of the link in sums over the local automata
   };
   enum { LINKED = 1 };
+  // an automaton's view of one of its acting links: the partner (local or
+  // ghost index) and the entry, or swapped_entry(entry) (<= -2) where it
+  // sees the entry swapped
+  struct LinkEnd {
+    int j;
+    int entry;
+  };
+  static int swapped_entry(int e) { return -2 - e; }    // its own inverse
+  std::vector<LinkEntry> entries;
   std::vector<LinkEnd> ends;
   std::vector<int> first;    // ends of local automaton i: first[i] ... first[i + 1] - 1
 
@@ -118,6 +129,12 @@ class MCAStableTimestep : protected Pointers {
   void prepare(const Input &, Comm *);
   void cache_links(const Input &);
   MCAKernels::MCALinkTangent tangent(const LinkEnd &) const;
+  // the partner's mean-stress weights (forward, transposed) of an end
+  void jacobi_weights(const LinkEnd &, double &fwd, double &tr) const;
+  // the share of an end's link in sums over the local automata: 1 for the
+  // lower ID of a local pair, 0 for the other, 1/2 for a link to a ghost
+  // (counted half by each of the two processors that own its automata)
+  double end_weight(const Input &, const LinkEnd &) const;
   // y = M^-1/2 K_s M^-1/2 x on the local automata (6 per automaton)
   void apply(const Input &, Comm *, const double *x, double *y);
   // the motion of the local automata for a mass-scaled vector, sent to the ghosts
@@ -125,8 +142,6 @@ class MCAStableTimestep : protected Pointers {
   double dot(const std::vector<double> &a, const std::vector<double> &b) const;
   // the link of local automaton i at row m seen from i, and its partner
   void tangent_of(const Input &, int i, int m, int &j, MCAKernels::MCALinkTangent &t) const;
-  // the share of each link, so that a sum over the local automata counts it once
-  double link_weight(const Input &, int i, int j) const;
   double damping_ratio(const Input &, Comm *, const std::vector<double> &x, double omega);
 };
 
