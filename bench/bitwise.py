@@ -82,10 +82,11 @@ def scene_input(path, nsteps, extra=""):
     if not mca:
         dump = dump.split("\n", 1)[1]
     # the estimate of the stable time step to the last bit, as at the last
-    # step of the run (a fix keeps it: LAMMPS 2021 reads no compute between runs)
+    # step of the run (a fix keeps it: LAMMPS 2021 reads no compute between
+    # runs); invoked there only (Nfreq: that step), not at every step
     if mca:
         dump += ("compute         bitwise_dt all mca/timestep\n"
-                 "fix             bitwise_dt all ave/time 1 1 1 c_bitwise_dt[*]\n")
+                 f"fix             bitwise_dt all ave/time 1 1 $(step+{nsteps}) c_bitwise_dt[*]\n")
     estimate = ['print "BITWISE stable time step $(f_bitwise_dt[1]:%.17g) omega '
                 '$(f_bitwise_dt[4]:%.17g) zeta $(f_bitwise_dt[5]:%.17g)"'] if mca else []
     return "\n".join(lines[:last] + [dump + extra, f"run {nsteps}"] + estimate +

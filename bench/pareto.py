@@ -19,11 +19,11 @@ finely; inputs bench/in.pareto_cube and bench/in.pareto_wave):
            dispersion (the MCA relation of examples/waves, exact for the
            law in space) and the rest (the time step); and the largest
            deviation of the total energy from its initial value, relative
-           (energy error, a panel of its own); and the loss of amplitude
-           per period of the mode's projection (a damped sinusoid fitted to it)
-           (amplitude error, a panel of its own: the law is elastic, the
-           energy the code prints is the work done along the path and does
-           not show a loss, doc/src/pair_mca.rst)
+           (energy error, a panel of its own); and the amplitude lost per
+           period by the mode's projection, a damped sinusoid fitted to it
+           (amplitude error, a panel of its own: the energy the code prints
+           is the work done along the path and does not show the loss,
+           doc/src/pair_mca.rst)
   plastic  the same cube past yield (von Mises, sigma_y = 2 MPa, linear
            hardening H = 10 GPa, examples/plasticity V3): the yield stress
            where the lines fitted to the elastic and post-yield parts meet,

@@ -322,33 +322,33 @@ void MCAStableTimestep::cache_links(const Input &in)
       entries.push_back(e);
     }
 
-  // each automaton's ends, in the order of its rows; the other end of a
-  // local pair finds the entry through the partner's row of the link
-  auto entry_of = [&](int i, int m) {
-    const int jj = d.partner(i, m);
-    if (!partner_evaluates(d, i, jj)) return row_entry[row_start[i] + m];
-    const int made = row_entry[row_start[jj] + d.row(i, m)];
-    return made >= 0 ? swapped_entry(made) : -1;
-  };
-  std::size_t acting = 0;
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < d.nlinks(i); m++)
-      if (entry_of(i, m) != -1) acting++;
-  ends.reserve(acting);
+  // each automaton's ends, in the order of its rows (room for all rows: a
+  // link that does not act has no end); the other end of a local pair
+  // finds the entry through the partner's row of the link
+  ends.reserve(row_start[nlocal]);
   for (int i = 0; i < nlocal; i++) {
     first[i] = static_cast<int>(ends.size());
     for (int m = 0; m < d.nlinks(i); m++) {
-      const int entry = entry_of(i, m);
-      if (entry != -1) ends.push_back({d.partner(i, m), entry});
+      const int jj = d.partner(i, m);
+      const bool own = !partner_evaluates(d, i, jj);
+      const int made = row_entry[own ? row_start[i] + m : row_start[jj] + d.row(i, m)];
+      if (made >= 0) ends.push_back({jj, own ? made : swapped_entry(made)});
     }
   }
   first[nlocal] = static_cast<int>(ends.size());
 }
 
+const MCAStableTimestep::LinkEntry &MCAStableTimestep::entry(const LinkEnd &end,
+                                                             bool &swapped) const
+{
+  swapped = end.entry < 0;
+  return entries[swapped ? swapped_entry(end.entry) : end.entry];
+}
+
 MCALinkTangent MCAStableTimestep::tangent(const LinkEnd &end) const
 {
-  const bool swapped = end.entry < 0;
-  const LinkEntry &e = entries[swapped ? swapped_entry(end.entry) : end.entry];
+  bool swapped;
+  const LinkEntry &e = entry(end, swapped);
   MCALinkTangent t;
   for (int k = 0; k < 3; k++) t.n[k] = swapped ? -e.n[k] : e.n[k];
   t.q_i = swapped ? e.q_j : e.q_i;
@@ -370,8 +370,8 @@ MCALinkTangent MCAStableTimestep::tangent(const LinkEnd &end) const
 
 void MCAStableTimestep::jacobi_weights(const LinkEnd &end, double &fwd, double &tr) const
 {
-  const bool swapped = end.entry < 0;
-  const LinkEntry &e = entries[swapped ? swapped_entry(end.entry) : end.entry];
+  bool swapped;
+  const LinkEntry &e = entry(end, swapped);
   fwd = swapped ? e.jacobi_tr : e.jacobi_fwd;
   tr = swapped ? e.jacobi_fwd : e.jacobi_tr;
 }

@@ -128,6 +128,8 @@ class MCAStableTimestep : protected Pointers {
   void grow(int n);
   void prepare(const Input &, Comm *);
   void cache_links(const Input &);
+  // the entry an end reads, and whether it reads it swapped
+  const LinkEntry &entry(const LinkEnd &, bool &swapped) const;
   MCAKernels::MCALinkTangent tangent(const LinkEnd &) const;
   // the partner's mean-stress weights (forward, transposed) of an end
   void jacobi_weights(const LinkEnd &, double &fwd, double &tr) const;

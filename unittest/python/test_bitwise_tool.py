@@ -46,8 +46,8 @@ def test_a_build_against_itself_is_identical(build, tmp_path):
 
 
 def test_a_changed_run_is_reported(build, tmp_path):
-    log = (mcatest.ROOT / "examples" / "waves" / "in.wave").read_text()
-    assert re.search(r"^timestep\s", log, re.M), "in.wave sets its time step"
+    wave_input = (mcatest.ROOT / "examples" / "waves" / "in.wave").read_text()
+    assert re.search(r"^timestep\s", wave_input, re.M), "in.wave sets its time step"
     result = check(build, tmp_path, "--new-cmd", "timestep $(dt*(1+1e-9))")
     assert result.returncode == 1, result.stdout[-2000:] + result.stderr[-2000:]
     assert "DIFFERENCES" in result.stdout
