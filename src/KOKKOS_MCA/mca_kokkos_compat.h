@@ -43,6 +43,7 @@
 #include "kokkos_type.h"
 #include "lammps.h"
 #include "mca_config.h"
+#include "memory_kokkos.h"
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
@@ -111,6 +112,70 @@ namespace MCAKokkos {
     neighbor->requests[irequest]->kokkos_host = 0;
 #endif
   }
+
+  // a perpetual full neighbour list of a Kokkos pair style, built in the
+  // style's execution space (its kernels read it there)
+  template <class DeviceType>
+  inline void request_kokkos_full_list(Neighbor *neighbor, Pair *pair, int instance)
+  {
+    const int on_host = std::is_same<DeviceType, LMPHostType>::value &&
+        !std::is_same<DeviceType, LMPDeviceType>::value;
+    const int on_device = std::is_same<DeviceType, LMPDeviceType>::value;
+#ifdef MCA_HAVE_ADD_REQUEST
+    (void) instance;
+    auto request = neighbor->add_request(pair, NeighConst::REQ_FULL);
+    request->set_kokkos_host(on_host);
+    request->set_kokkos_device(on_device);
+#else
+    const int irequest = neighbor->request(pair, instance);
+    neighbor->requests[irequest]->half = 0;
+    neighbor->requests[irequest]->full = 1;
+    neighbor->requests[irequest]->kokkos_host = on_host;
+    neighbor->requests[irequest]->kokkos_device = on_device;
+#endif
+  }
+
+  // the per-atom energy and virial of a Kokkos pair style: DualViews whose
+  // host copies are the style's eatom and vatom
+  class PairTally {
+   public:
+    dual_double_1d k_eatom;
+    dual_double_2d k_vatom;
+
+    // made again at a step that tallies them, at the sizes ev_setup() chose
+    void make(MemoryKokkos *memoryKK, double *&eatom, double **&vatom, int eflag_atom,
+              int vflag_atom, int maxeatom, int maxvatom)
+    {
+      if (eflag_atom) {
+        memoryKK->destroy_kokkos(k_eatom, eatom);
+        memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
+      }
+      if (vflag_atom) {
+        memoryKK->destroy_kokkos(k_vatom, vatom);
+        memoryKK->create_kokkos(k_vatom, vatom, maxvatom, 6, "pair:vatom");
+      }
+    }
+
+    // what a kernel on DeviceType wrote, to the host copies
+    template <class DeviceType> void to_host(int eflag_atom, int vflag_atom)
+    {
+      if (eflag_atom) {
+        k_eatom.template modify<DeviceType>();
+        k_eatom.sync_host();
+      }
+      if (vflag_atom) {
+        k_vatom.template modify<DeviceType>();
+        k_vatom.sync_host();
+      }
+    }
+
+    // (the style's destructor: Pair's then finds null pointers)
+    void destroy(MemoryKokkos *memoryKK, double *&eatom, double **&vatom)
+    {
+      memoryKK->destroy_kokkos(k_eatom, eatom);
+      memoryKK->destroy_kokkos(k_vatom, vatom);
+    }
+  };
 
   // sync masks of the atom styles
 #ifdef MCA_HAVE_KK_AVEC_VIRTUAL

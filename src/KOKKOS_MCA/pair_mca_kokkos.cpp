@@ -65,8 +65,7 @@ template <class DeviceType> PairMCAKokkos<DeviceType>::~PairMCAKokkos()
   memoryKK->destroy_kokkos(k_return_smean, return_smean);
   memoryKK->destroy_kokkos(k_partner_cache, partner_cache);
   memoryKK->destroy_kokkos(k_row_cache, row_cache);
-  memoryKK->destroy_kokkos(k_eatom, eatom);
-  memoryKK->destroy_kokkos(k_vatom, vatom);
+  tally.destroy(memoryKK, eatom, vatom);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -192,8 +191,8 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
   d.break_stride = atom->ntypes + 1;
   d.damage = avecKK->k_damage.template view<DeviceType>();
   d.contact_rules = d_contact_rules;
-  if (eflag_atom) d.eatom = k_eatom.template view<DeviceType>();
-  if (vflag_atom) d.vatom = k_vatom.template view<DeviceType>();
+  if (eflag_atom) d.eatom = tally.k_eatom.template view<DeviceType>();
+  if (vflag_atom) d.vatom = tally.k_vatom.template view<DeviceType>();
   d.nlocal = atom->nlocal;
   return d;
 }
@@ -526,14 +525,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   ev_init(eflag, vflag, 0);
   if (!links->created) error->all(FLERR, "Pair mca/kk: compute() before the links were made");
 
-  if (eflag_atom) {
-    memoryKK->destroy_kokkos(k_eatom, eatom);
-    memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
-  }
-  if (vflag_atom) {
-    memoryKK->destroy_kokkos(k_vatom, vatom);
-    memoryKK->create_kokkos(k_vatom, vatom, maxvatom, 6, "pair:vatom");
-  }
+  tally.make(memoryKK, eatom, vatom, eflag_atom, vflag_atom, maxeatom, maxvatom);
 
   atomKK->sync(execution_space, datamask_read);
   atomKK->modified(execution_space, datamask_modify);
@@ -606,14 +598,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   if (eflag_global) eng_vdwl += sums.energy;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += sums.virial[k];
-  if (eflag_atom) {
-    k_eatom.template modify<DeviceType>();
-    k_eatom.sync_host();
-  }
-  if (vflag_atom) {
-    k_vatom.template modify<DeviceType>();
-    k_vatom.sync_host();
-  }
+  tally.to_host<DeviceType>(eflag_atom, vflag_atom);
 
   nstretched = sums.nlong;
   if (neighbor->ago == 0) stretched_warning();

@@ -135,8 +135,7 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   // materials by type
   Kokkos::View<MCAKernels::MCAMaterial *, DeviceType> d_material;
   // per-atom energy and virial
-  MCAKokkos::dual_double_1d k_eatom;
-  MCAKokkos::dual_double_2d k_vatom;
+  MCAKokkos::PairTally tally;
 
   int kk_nmax, tally_nmax, chunk_size;
 

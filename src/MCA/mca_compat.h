@@ -40,6 +40,13 @@
 #include <cstring>
 #include <string>
 
+// Pair::extract_peratom() (for fix pair) exists since 2022
+#ifdef MCA_HAVE_EXTRACT_PERATOM
+#define MCA_EXTRACT_PERATOM_OVERRIDE override
+#else
+#define MCA_EXTRACT_PERATOM_OVERRIDE
+#endif
+
 namespace LAMMPS_NS {
 
 class Fix;

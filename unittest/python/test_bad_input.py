@@ -63,6 +63,29 @@ pair_coeff      * * E 70e9 nu 0.3 rho 2700
 run             0
 """
 
+# pair_style mlp: a 2-D box of two atoms
+MLP_BOX = """
+units           lj
+dimension       2
+atom_style      atomic
+region          box block 0 4 0 4 -0.5 0.5
+create_box      2 box
+create_atoms    1 single 1 1 0
+create_atoms    1 single 2 1 0
+mass            * 1.0
+"""
+MLP_3D = """
+units           lj
+atom_style      atomic
+region          box block 0 4 0 4 0 4
+create_box      1 box
+create_atoms    1 single 1 1 1
+mass            * 1.0
+pair_style      mlp 1.3
+pair_coeff      1 1 harmonic 2 1 0.05 6 0
+run             0
+"""
+
 
 def data_case(line):
     """Read a one-atom data file whose Atoms line is `line`."""
@@ -181,6 +204,29 @@ CASES = [
      r"Unknown compute mca/link keyword width"),
     ("compute link pair", BOX + "pair_style zero 1.0\npair_coeff * *\n"
      "compute 1 all mca/link length\nrun 0\n", r"Compute mca/link requires pair_style mca"),
+    ("mlp order", MLP_BOX + "pair_style mlp 1.3\npair_coeff * * harmonic 2 1 0.05 5 0\n",
+     r"Pair coeff mlp: n must be 4 \(square lattice\) or 6 \(hexagonal\), not 5"),
+    ("mlp f0", MLP_BOX + "pair_style mlp 1.3\npair_coeff * * harmonic 2 1 -0.05 6 0\n",
+     r"Pair coeff mlp: f0 must be >= 0 .*not -0.05"),
+    ("mlp central", MLP_BOX + "pair_style mlp 1.3\npair_coeff * * buck 2 1 0.05 6 0\n",
+     r"central potential must be harmonic, morse or lj, not buck"),
+    ("mlp count", MLP_BOX + "pair_style mlp 1.3\npair_coeff * * morse 1 1 0.05 6 0\n",
+     r"Pair coeff mlp morse: expected I J morse D0 alpha r0 f0 n theta0 \[cutoff\]"),
+    ("mlp sigma", MLP_BOX + "pair_style mlp 1.3\npair_coeff * * lj 1 0 0.05 6 0\n",
+     r"Pair coeff mlp lj: sigma must be > 0, not 0"),
+    ("mlp taper", MLP_BOX + "pair_style mlp 1.3 taper 1.3\n",
+     r"Pair style mlp: taper width must be >= 0 and < the cutoff 1.3, not 1.3"),
+    ("mlp taper pair", MLP_BOX + "pair_style mlp 1.3 taper 0.5\n"
+     "pair_coeff * * harmonic 2 1 0.05 6 0 0.4\nrun 0\n",
+     r"Pair style mlp: taper width 0.5 must be < the cutoff 0.4 of types 1 1"),
+    ("mlp return", MLP_BOX + "pair_style mlp 1.3 return paper\n",
+     r"Pair style mlp: return must be literal or conservative, not paper"),
+    ("mlp keyword", MLP_BOX + "pair_style mlp 1.3 shift yes\n",
+     r"Pair style mlp: unknown keyword shift \(allowed: return, taper\)"),
+    ("mlp mixing", MLP_BOX + "pair_style mlp 1.3\npair_coeff 1 1 harmonic 2 1 0.05 6 0\n"
+     "pair_coeff 2 2 harmonic 2 1 0.05 6 0\nrun 0\n",
+     r"Pair style mlp: no coefficients for types 1 2 .*no mixing rule"),
+    ("mlp 3d", MLP_3D, r"Pair style mlp(/kk)? requires dimension 2"),
     data_case("1 1 1 5 0.5 0 1.0 0 1 1 1") + (r"Invalid packing 5 in Atoms section",),
     data_case("1 1 1 12 0.0 0 1.0 0 1 1 1") + (r"Invalid diameter 0 .*must be > 0",),
     data_case("1 1 1 12 -0.5 0 1.0 0 1 1 1") + (r"Invalid diameter -0.5",),

@@ -140,13 +140,9 @@ def test_pair_mca_kk_yaml(tmp_path, newton, name):
         assert err <= 10 * 5 * eps, f"{stage}_stress: {err:.2e}"
 
 
-@pytest.mark.parametrize("newton", ["on", "off"])
-@pytest.mark.parametrize("name", ["atomic-pair-gp_morse", "atomic-pair-gp_lj_cut",
-                                  "atomic-pair-gp_eam_alloy", "atomic-pair-gp_eam_fs"])
-def test_gp_pair_kk_yaml(tmp_path, newton, name):
-    """The GP pair styles' kk variants (the kernels of LAMMPS's kk styles with
-    the parameters or the tables of the scale levels) against the CPU
-    reference data."""
+def check_pair_kk_yaml(tmp_path, newton, name):
+    """A pair style's kk variant against the CPU reference data of its
+    YAML file (a style of plain pair forces: no MCA atom style)."""
     build = kokkos_build()
     config = yaml.safe_load((TESTS / f"{name}.yaml").read_text())
     eps = float(config["epsilon"])
@@ -168,3 +164,20 @@ def test_gp_pair_kk_yaml(tmp_path, newton, name):
         virial = printed(output, "VIRIAL", stage) / METAL_NKTV2P
         err = relative_error(virial, stress_vector(config[f"{stage}_stress"]))
         assert err <= 10 * 5 * eps, f"{stage}_stress: {err:.2e}"
+
+
+@pytest.mark.parametrize("newton", ["on", "off"])
+@pytest.mark.parametrize("name", ["atomic-pair-gp_morse", "atomic-pair-gp_lj_cut",
+                                  "atomic-pair-gp_eam_alloy", "atomic-pair-gp_eam_fs"])
+def test_gp_pair_kk_yaml(tmp_path, newton, name):
+    """The GP pair styles' kk variants (the kernels of LAMMPS's kk styles with
+    the parameters or the tables of the scale levels) against the CPU
+    reference data."""
+    check_pair_kk_yaml(tmp_path, newton, name)
+
+
+@pytest.mark.parametrize("newton", ["on", "off"])
+@pytest.mark.parametrize("name", ["atomic-pair-mlp", "atomic-pair-mlp_conservative"])
+def test_mlp_pair_kk_yaml(tmp_path, newton, name):
+    """pair_style mlp/kk (2-D, both return forces) against the CPU reference data."""
+    check_pair_kk_yaml(tmp_path, newton, name)

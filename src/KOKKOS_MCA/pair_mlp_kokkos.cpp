@@ -1,0 +1,196 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "pair_mlp_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "memory_kokkos.h"
+#include "neigh_list_kokkos.h"
+#include "neighbor.h"
+
+using namespace LAMMPS_NS;
+using namespace MLPKernels;
+
+namespace {
+
+// the force kernel: one local atom per call, its whole neighbour list
+template <class DeviceType> struct MLPForceKernel {
+  template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
+  view<decltype(AtomKokkos::k_x)> x;
+  view<decltype(AtomKokkos::k_f)> f;
+  view<decltype(AtomKokkos::k_type)> type;
+  Kokkos::View<MLPCoeff *, DeviceType> coeff;
+  typename ArrayTypes<DeviceType>::t_int_1d ilist, numneigh;
+  typename ArrayTypes<DeviceType>::t_neighbors_2d neighbors;
+  MCAKokkos::double_1d<DeviceType> eatom, freturn;
+  MCAKokkos::double_2d<DeviceType> vatom;
+  double special_lj[4];
+  int ntypes1, return_style;
+  int eflag_global, eflag_atom, vflag_global, vflag_atom, freturn_flag;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int ii, EV_FLOAT &ev) const
+  {
+    const int i = ilist(ii);
+    const double xi = x(i, 0), yi = x(i, 1);
+    const int row = type(i) * ntypes1;
+    double fx = 0.0, fy = 0.0, rx = 0.0, ry = 0.0, e = 0.0;
+    double v[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    const int jnum = numneigh(i);
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = neighbors(i, jj);
+      const double factor = special_lj[(j >> SBBITS) & 3];
+      j &= NEIGHMASK;
+      const double dx = xi - x(j, 0), dy = yi - x(j, 1);
+      const double rsq = dx * dx + dy * dy;
+      const MLPCoeff &p = coeff(row + type(j));
+      if (rsq >= p.cutsq) continue;
+      const MLPPairForce out = pair_force(p, return_style, dx, dy, rsq, factor);
+      fx += out.fx;
+      fy += out.fy;
+      rx += out.rx;
+      ry += out.ry;
+      // the atom's half of the pair's energy and virial (ev_tally_xyz_full)
+      e += 0.5 * out.energy;
+      v[0] += 0.5 * dx * out.fx;
+      v[1] += 0.5 * dy * out.fy;
+      v[3] += 0.5 * dx * out.fy;
+    }
+    f(i, 0) += fx;
+    f(i, 1) += fy;
+    if (eflag_global) ev.evdwl += e;
+    if (eflag_atom) eatom(i) += e;
+    if (vflag_global)
+      for (int k = 0; k < 6; k++) ev.v[k] += v[k];
+    if (vflag_atom)
+      for (int k = 0; k < 6; k++) vatom(i, k) += v[k];
+    if (freturn_flag) freturn(i) = sqrt(rx * rx + ry * ry);
+  }
+};
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType>
+PairMLPKokkos<DeviceType>::PairMLPKokkos(LAMMPS *lmp) :
+    MCAKokkos::RequiresKokkos(lmp, "Pair style mlp/kk"), PairMLP(lmp), kk_nmax(0)
+{
+  kokkosable = 1;
+  atomKK = (AtomKokkos *) atom;
+  execution_space = MCAKokkos::space_of<DeviceType>();
+  datamask_read = X_MASK | F_MASK | TYPE_MASK | ENERGY_MASK | VIRIAL_MASK;
+  datamask_modify = F_MASK | ENERGY_MASK | VIRIAL_MASK;
+}
+
+template <class DeviceType> PairMLPKokkos<DeviceType>::~PairMLPKokkos()
+{
+  if (copymode) return;
+  // the base destructor then finds null pointers
+  tally.destroy(memoryKK, eatom, vatom);
+  memoryKK->destroy_kokkos(k_freturn, freturn);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMLPKokkos<DeviceType>::init_style()
+{
+  if (domain->dimension != 2)
+    error->all(FLERR,
+               "Pair style mlp/kk requires dimension 2 (the return force toward the lattice "
+               "axes is defined in the plane; doc/src/pair_mlp.rst)");
+  MCAKokkos::request_kokkos_full_list<DeviceType>(neighbor, this, instance_me);
+}
+
+/* ----------------------------------------------------------------------
+   the coefficients of each type pair, both orders, on the device (the
+   last init_one() call of a run is that of ntypes ntypes)
+------------------------------------------------------------------------- */
+
+template <class DeviceType> double PairMLPKokkos<DeviceType>::init_one(int i, int j)
+{
+  const double cut = PairMLP::init_one(i, j);
+  if (i == atom->ntypes && j == atom->ntypes)
+    d_coeff = MCAKokkos::copy_to_device<DeviceType>(coeff_table.data(), (int) coeff_table.size(),
+                                                    "pair:mlp_coeff");
+  return cut;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairMLPKokkos<DeviceType>::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag, 0);
+  tally.make(memoryKK, eatom, vatom, eflag_atom, vflag_atom, maxeatom, maxvatom);
+  if (freturn_flag && atom->nmax > kk_nmax) {
+    kk_nmax = atom->nmax;
+    memoryKK->destroy_kokkos(k_freturn, freturn);
+    memoryKK->create_kokkos(k_freturn, freturn, kk_nmax, "pair:freturn");
+    nmax_freturn = kk_nmax;
+  }
+
+  atomKK->sync(execution_space, datamask_read);
+  atomKK->modified(execution_space, datamask_modify);
+
+  auto *klist = static_cast<NeighListKokkos<DeviceType> *>(list);
+  MLPForceKernel<DeviceType> kernel;
+  kernel.x = atomKK->k_x.template view<DeviceType>();
+  kernel.f = atomKK->k_f.template view<DeviceType>();
+  kernel.type = atomKK->k_type.template view<DeviceType>();
+  kernel.coeff = d_coeff;
+  kernel.ilist = klist->d_ilist;
+  kernel.numneigh = klist->d_numneigh;
+  kernel.neighbors = klist->d_neighbors;
+  if (eflag_atom) {
+    kernel.eatom = tally.k_eatom.template view<DeviceType>();
+    Kokkos::deep_copy(kernel.eatom, 0.0);
+  }
+  if (vflag_atom) {
+    kernel.vatom = tally.k_vatom.template view<DeviceType>();
+    Kokkos::deep_copy(kernel.vatom, 0.0);
+  }
+  if (freturn_flag) kernel.freturn = k_freturn.template view<DeviceType>();
+  for (int k = 0; k < 4; k++) kernel.special_lj[k] = force->special_lj[k];
+  kernel.ntypes1 = atom->ntypes + 1;
+  kernel.return_style = return_style;
+  kernel.eflag_global = eflag_global;
+  kernel.eflag_atom = eflag_atom;
+  kernel.vflag_global = vflag_global;
+  kernel.vflag_atom = vflag_atom;
+  kernel.freturn_flag = freturn_flag;
+
+  EV_FLOAT ev;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, klist->inum), kernel, ev);
+
+  if (eflag_global) eng_vdwl += ev.evdwl;
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += ev.v[k];
+  tally.to_host<DeviceType>(eflag_atom, vflag_atom);
+  if (freturn_flag) {
+    k_freturn.template modify<DeviceType>();
+    k_freturn.sync_host();
+  }
+}
+
+namespace LAMMPS_NS {
+template class PairMLPKokkos<LMPDeviceType>;
+#ifdef LMP_KOKKOS_GPU
+template class PairMLPKokkos<LMPHostType>;
+#endif
+}    // namespace LAMMPS_NS

@@ -1,0 +1,166 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   The pair interaction of the movable lattice particles (MLP, Popov and
+   Filippov; doc/src/pair_mlp.rst), written once for pair_style mlp and
+   mlp/kk: plain arithmetic on doubles (mca_inline.h).
+
+   A pair (i, j) in 2-D, d = x_i - x_j, r = |d|, phi = arg(d):
+     central part   E = s(r) U(r), U harmonic, Morse or LJ
+     return force   on i: -f0 s(r) sin(n (phi - theta0)) e_phi   ("literal")
+                    or the force of E = s(r) (f0 r_ref / n)
+                    (1 - cos(n (phi - theta0)))              ("conservative")
+   with e_phi = (-sin phi, cos phi), n = 4 or 6, s(r) a taper (1 below
+   rc - w, a C2 quintic down to 0 at rc; w = 0: a plain cut).  The force
+   on j is minus the force on i (n is even: evaluating the pair from j
+   reverses d, keeps sin(n phi) and reverses e_phi), so linear momentum
+   is conserved; angular momentum is not: the return force couples the
+   lattice to the fixed directions theta0 (the method's point).
+   sin and cos of n (phi - theta0) come from the complex power
+   (d / r)^n e^{-i n theta0}: no atan2.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_MLP_KERNELS_H
+#define LMP_MLP_KERNELS_H
+
+#include "mca_inline.h"
+
+#include <cmath>
+
+namespace LAMMPS_NS {
+namespace MLPKernels {
+
+  enum MLPCentral { MLP_HARMONIC = 0, MLP_MORSE = 1, MLP_LJ = 2 };
+  enum MLPReturn { MLP_LITERAL = 0, MLP_CONSERVATIVE = 1 };
+
+  // the coefficients of one type pair (plain record: copied to a device)
+  struct MLPCoeff {
+    int central;       // MLPCentral
+    int n;             // order of the return force (4 or 6), 0: no return force
+    double a, b, c;    // harmonic: K r0 -; Morse: D0 alpha r0; LJ: epsilon sigma -
+    double f0;         // amplitude of the return force (force units)
+    double cos_nt0;    // cos(n theta0), sin(n theta0)
+    double sin_nt0;
+    double r_ref;    // equilibrium distance of U (conservative return energy)
+    double cutsq;    // cutoff squared
+    double cut;
+    double taper_start;    // rc - w: where the taper begins (= rc: none)
+  };
+
+  // what a pair gives atom i
+  struct MLPPairForce {
+    double fx, fy;    // total force on i
+    double rx, ry;    // its return-force part
+    double energy;    // pair energy (central + conservative return)
+  };
+
+  // central potential U(r) and dU/dr
+  MCA_INLINE void central_potential(const MLPCoeff &p, double r, double &u, double &du)
+  {
+    if (p.central == MLP_HARMONIC) {
+      const double dr = r - p.b;
+      u = 0.5 * p.a * dr * dr;
+      du = p.a * dr;
+    } else if (p.central == MLP_MORSE) {
+      const double e = exp(-p.b * (r - p.c));
+      u = p.a * (e * e - 2.0 * e);
+      du = 2.0 * p.a * p.b * (e - e * e);
+    } else {
+      const double sr2 = p.b * p.b / (r * r);
+      const double sr6 = sr2 * sr2 * sr2;
+      u = 4.0 * p.a * (sr6 * sr6 - sr6);
+      du = -24.0 * p.a * (2.0 * sr6 * sr6 - sr6) / r;
+    }
+  }
+
+  // U''(r_ref): the pair's longitudinal stiffness at its equilibrium distance
+  MCA_INLINE double central_stiffness(const MLPCoeff &p)
+  {
+    if (p.central == MLP_HARMONIC) return p.a;
+    if (p.central == MLP_MORSE) return 2.0 * p.a * p.b * p.b;
+    // LJ at r_ref = 2^(1/6) sigma: 72 epsilon / (2^(1/3) sigma^2)
+    return 72.0 * p.a / (cbrt(2.0) * p.b * p.b);
+  }
+
+  // the taper s(r) and ds/dr: 1 below taper_start, 1 - 10t^3 + 15t^4 - 6t^5
+  // on [taper_start, cut] (value, slope and curvature continuous)
+  MCA_INLINE void taper(const MLPCoeff &p, double r, double &s, double &ds)
+  {
+    if (r <= p.taper_start) {
+      s = 1.0;
+      ds = 0.0;
+      return;
+    }
+    const double w = p.cut - p.taper_start;
+    const double t = (r - p.taper_start) / w;
+    s = 1.0 - t * t * t * (10.0 - 15.0 * t + 6.0 * t * t);
+    ds = -30.0 * t * t * (1.0 - t) * (1.0 - t) / w;
+  }
+
+  // sin and cos of n (phi - theta0) for the unit vector (ux, uy) = d / r
+  MCA_INLINE void return_angle(const MLPCoeff &p, double ux, double uy, double &sn, double &cn)
+  {
+    // z^2, z^4, z^6 of z = ux + i uy
+    const double re2 = ux * ux - uy * uy, im2 = 2.0 * ux * uy;
+    double re = re2 * re2 - im2 * im2, im = 2.0 * re2 * im2;
+    if (p.n == 6) {
+      const double re6 = re * re2 - im * im2;
+      im = re * im2 + im * re2;
+      re = re6;
+    }
+    // times e^{-i n theta0}
+    cn = re * p.cos_nt0 + im * p.sin_nt0;
+    sn = im * p.cos_nt0 - re * p.sin_nt0;
+  }
+
+  // the force of pair (i, j) on i, d = x_i - x_j, rsq = |d|^2 < cutsq;
+  // factor: the special-bond factor
+  MCA_INLINE MLPPairForce pair_force(const MLPCoeff &p, int return_style, double dx, double dy,
+                                     double rsq, double factor)
+  {
+    MLPPairForce out;
+    const double r = sqrt(rsq);
+    const double ux = dx / r, uy = dy / r;
+    double u, du, s, ds;
+    central_potential(p, r, u, du);
+    taper(p, r, s, ds);
+    // radial force on i (along +d) and tangential one (along e_phi)
+    double radial = -(s * du + ds * u);
+    double tangential = 0.0, e_return = 0.0, radial_return = 0.0;
+    if (p.n > 0 && p.f0 != 0.0) {
+      double sn, cn;
+      return_angle(p, ux, uy, sn, cn);
+      if (return_style == MLP_LITERAL) {
+        tangential = -p.f0 * s * sn;
+      } else {
+        const double v = p.f0 * p.r_ref / p.n * (1.0 - cn);
+        e_return = s * v;
+        radial_return = -ds * v;
+        // -(1/r) dE/dphi, dV/dphi = f0 r_ref sin
+        tangential = -s * p.f0 * p.r_ref / r * sn;
+      }
+    }
+    radial += radial_return;
+    out.rx = factor * (radial_return * ux - tangential * uy);
+    out.ry = factor * (radial_return * uy + tangential * ux);
+    out.fx = factor * (radial * ux - tangential * uy);
+    out.fy = factor * (radial * uy + tangential * ux);
+    out.energy = factor * (s * u + e_return);
+    return out;
+  }
+
+}    // namespace MLPKernels
+}    // namespace LAMMPS_NS
+
+#endif

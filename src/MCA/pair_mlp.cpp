@@ -1,0 +1,441 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "pair_mlp.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace MLPKernels;
+using MathConst::MY_PI;
+
+/* ---------------------------------------------------------------------- */
+
+PairMLP::PairMLP(LAMMPS *lmp) :
+    Pair(lmp), cut_global(0.0), taper_width(0.0), return_style(MLP_LITERAL), freturn_flag(0),
+    nmax_freturn(0), freturn(nullptr)
+{
+  // the force is not central: no single(), and the virial is tallied pair
+  // by pair (a full list leaves the ghosts without forces for fdotr)
+  single_enable = 0;
+  restartinfo = 1;
+  writedata = 1;
+  no_virial_fdotr_compute = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairMLP::~PairMLP()
+{
+  if (copymode) return;
+  memory->destroy(freturn);
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairMLP::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->ntypes + 1;
+  memory->create(setflag, np1, np1, "pair:setflag");
+  memory->create(cutsq, np1, np1, "pair:cutsq");
+  for (int i = 0; i < np1; i++)
+    for (int j = 0; j < np1; j++) setflag[i][j] = 0;
+  coeff_table.assign(np1 * np1, MLPCoeff());
+  theta0_deg.assign(np1 * np1, 0.0);
+}
+
+MLPCoeff &PairMLP::coeff_of(int i, int j)
+{
+  return coeff_table[i * (atom->ntypes + 1) + j];
+}
+
+/* ----------------------------------------------------------------------
+   pair_style mlp cutoff [return literal|conservative] [taper width]
+------------------------------------------------------------------------- */
+
+void PairMLP::settings(int narg, char **arg)
+{
+  if (narg < 1) utils::missing_cmd_args(FLERR, "pair_style mlp", error);
+  cut_global = utils::numeric(FLERR, arg[0], false, lmp);
+  if (cut_global <= 0.0) error->all(FLERR, "Pair style mlp: cutoff must be > 0, not {}", arg[0]);
+  return_style = MLP_LITERAL;
+  taper_width = 0.0;
+  int iarg = 1;
+  while (iarg < narg) {
+    if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style mlp", error);
+    if (strcmp(arg[iarg], "return") == 0) {
+      if (strcmp(arg[iarg + 1], "literal") == 0)
+        return_style = MLP_LITERAL;
+      else if (strcmp(arg[iarg + 1], "conservative") == 0)
+        return_style = MLP_CONSERVATIVE;
+      else
+        error->all(FLERR, "Pair style mlp: return must be literal or conservative, not {}",
+                   arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "taper") == 0) {
+      taper_width = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (taper_width < 0.0 || taper_width >= cut_global)
+        error->all(FLERR, "Pair style mlp: taper width must be >= 0 and < the cutoff {}, not {}",
+                   cut_global, arg[iarg + 1]);
+    } else {
+      error->all(FLERR, "Pair style mlp: unknown keyword {} (allowed: return, taper)", arg[iarg]);
+    }
+    iarg += 2;
+  }
+
+  // a new global cutoff resets the explicitly set ones (as lj/cut does)
+  if (allocated) {
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = i; j <= atom->ntypes; j++)
+        if (setflag[i][j]) coeff_of(i, j).cut = cut_global;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J harmonic K r0        f0 n theta0 [cutoff]
+   pair_coeff I J morse D0 alpha r0    f0 n theta0 [cutoff]
+   pair_coeff I J lj epsilon sigma     f0 n theta0 [cutoff]
+------------------------------------------------------------------------- */
+
+void PairMLP::coeff(int narg, char **arg)
+{
+  if (narg < 3) utils::missing_cmd_args(FLERR, "pair_coeff", error);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  MLPCoeff p = MLPCoeff();
+  int nparam;
+  if (strcmp(arg[2], "harmonic") == 0) {
+    p.central = MLP_HARMONIC;
+    nparam = 2;
+  } else if (strcmp(arg[2], "morse") == 0) {
+    p.central = MLP_MORSE;
+    nparam = 3;
+  } else if (strcmp(arg[2], "lj") == 0) {
+    p.central = MLP_LJ;
+    nparam = 2;
+  } else {
+    error->all(FLERR, "Pair coeff mlp: central potential must be harmonic, morse or lj, not {}",
+               arg[2]);
+    return;
+  }
+  if (narg != 3 + nparam + 3 && narg != 3 + nparam + 4)
+    error->all(FLERR,
+               "Pair coeff mlp {}: expected I J {} {} f0 n theta0 [cutoff] ({} or {} arguments), "
+               "got {}",
+               arg[2], arg[2],
+               p.central == MLP_HARMONIC
+                   ? "K r0"
+                   : (p.central == MLP_MORSE ? "D0 alpha r0" : "epsilon sigma"),
+               3 + nparam + 3, 3 + nparam + 4, narg);
+
+  double v[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < nparam; k++) v[k] = utils::numeric(FLERR, arg[3 + k], false, lmp);
+  const char *names[3][3] = {{"K", "r0", ""}, {"D0", "alpha", "r0"}, {"epsilon", "sigma", ""}};
+  for (int k = 0; k < nparam; k++) {
+    // energies may be 0 (a return force alone), lengths and alpha not
+    const bool energy = (k == 0);
+    if (energy ? v[k] < 0.0 : v[k] <= 0.0)
+      error->all(FLERR, "Pair coeff mlp {}: {} must be {} 0, not {}", arg[2], names[p.central][k],
+                 energy ? ">=" : ">", arg[3 + k]);
+  }
+  p.a = v[0];
+  p.b = v[1];
+  p.c = v[2];
+
+  int iarg = 3 + nparam;
+  p.f0 = utils::numeric(FLERR, arg[iarg], false, lmp);
+  if (p.f0 < 0.0)
+    error->all(FLERR,
+               "Pair coeff mlp: f0 must be >= 0 (a restoring return force; rotate the axes with "
+               "theta0 instead), not {}",
+               arg[iarg]);
+  p.n = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+  if (p.n != 4 && p.n != 6)
+    error->all(FLERR, "Pair coeff mlp: n must be 4 (square lattice) or 6 (hexagonal), not {}",
+               arg[iarg + 1]);
+  const double theta0 = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+  double cut = cut_global;
+  if (narg == iarg + 4) {
+    cut = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+    if (cut <= 0.0) error->all(FLERR, "Pair coeff mlp: cutoff must be > 0, not {}", arg[iarg + 3]);
+  }
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      coeff_of(i, j) = p;
+      set_derived(coeff_of(i, j), theta0, cut);
+      theta0_deg[i * (atom->ntypes + 1) + j] = theta0;
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients (no type pair set)");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairMLP::set_derived(MLPCoeff &p, double theta0_deg, double cut)
+{
+  const double nt0 = p.n * theta0_deg * MY_PI / 180.0;
+  p.cos_nt0 = cos(nt0);
+  p.sin_nt0 = sin(nt0);
+  if (p.central == MLP_HARMONIC)
+    p.r_ref = p.b;
+  else if (p.central == MLP_MORSE)
+    p.r_ref = p.c;
+  else
+    p.r_ref = pow(2.0, 1.0 / 6.0) * p.b;
+  p.cut = cut;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairMLP::init_style()
+{
+  if (domain->dimension != 2)
+    error->all(FLERR,
+               "Pair style mlp requires dimension 2 (the return force toward the lattice axes "
+               "is defined in the plane; doc/src/pair_mlp.rst)");
+  MCACompat::request_full_list(neighbor, this, instance_me, 0);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairMLP::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR,
+               "Pair style mlp: no coefficients for types {} {} (set them with pair_coeff; "
+               "this style has no mixing rule)",
+               i, j);
+  MLPCoeff &p = coeff_of(i, j);
+  if (taper_width >= p.cut)
+    error->all(FLERR, "Pair style mlp: taper width {} must be < the cutoff {} of types {} {}",
+               taper_width, p.cut, i, j);
+  p.taper_start = p.cut - taper_width;
+  p.cutsq = p.cut * p.cut;
+  coeff_of(j, i) = p;
+  return p.cut;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairMLP::grow_freturn()
+{
+  if (atom->nmax > nmax_freturn) {
+    nmax_freturn = atom->nmax;
+    memory->destroy(freturn);
+    memory->create(freturn, nmax_freturn, "pair:freturn");
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairMLP::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (freturn_flag) grow_freturn();
+
+  double **x = atom->x;
+  double **f = atom->f;
+  const int *type = atom->type;
+  const double *special_lj = force->special_lj;
+  const int ntypes1 = atom->ntypes + 1;
+  const MLPCoeff *table = coeff_table.data();
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xi = x[i][0], yi = x[i][1];
+    const MLPCoeff *row = table + type[i] * ntypes1;
+    const int *jlist = firstneigh[i];
+    double fx = 0.0, fy = 0.0, rx = 0.0, ry = 0.0;
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      int j = jlist[jj];
+      const double factor = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      const double dx = xi - x[j][0], dy = yi - x[j][1];
+      const double rsq = dx * dx + dy * dy;
+      const MLPCoeff &p = row[type[j]];
+      if (rsq >= p.cutsq) continue;
+      const MLPPairForce out = pair_force(p, return_style, dx, dy, rsq, factor);
+      fx += out.fx;
+      fy += out.fy;
+      rx += out.rx;
+      ry += out.ry;
+      if (evflag) ev_tally_xyz_full(i, out.energy, 0.0, out.fx, out.fy, 0.0, dx, dy, 0.0);
+    }
+    f[i][0] += fx;
+    f[i][1] += fy;
+    if (freturn_flag) freturn[i] = sqrt(rx * rx + ry * ry);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairMLP::write_restart_settings(FILE *fp)
+{
+  fwrite(&cut_global, sizeof(double), 1, fp);
+  fwrite(&taper_width, sizeof(double), 1, fp);
+  fwrite(&return_style, sizeof(int), 1, fp);
+}
+
+void PairMLP::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &cut_global, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &taper_width, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &return_style, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&taper_width, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&return_style, 1, MPI_INT, 0, world);
+}
+
+/* ----------------------------------------------------------------------
+   per set type pair: the coefficients as given (central, a, b, c, f0, n,
+   theta0 in degrees, cutoff); the rest is derived again on reading
+------------------------------------------------------------------------- */
+
+void PairMLP::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (!setflag[i][j]) continue;
+      const MLPCoeff &p = coeff_of(i, j);
+      const int ints[2] = {p.central, p.n};
+      const double doubles[6] = {p.a,  p.b, p.c, p.f0, theta0_deg[i * (atom->ntypes + 1) + j],
+                                 p.cut};
+      fwrite(ints, sizeof(int), 2, fp);
+      fwrite(doubles, sizeof(double), 6, fp);
+    }
+}
+
+void PairMLP::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (!setflag[i][j]) continue;
+      int ints[2];
+      double doubles[6];
+      if (me == 0) {
+        utils::sfread(FLERR, ints, sizeof(int), 2, fp, nullptr, error);
+        utils::sfread(FLERR, doubles, sizeof(double), 6, fp, nullptr, error);
+      }
+      MPI_Bcast(ints, 2, MPI_INT, 0, world);
+      MPI_Bcast(doubles, 6, MPI_DOUBLE, 0, world);
+      MLPCoeff p = MLPCoeff();
+      p.central = ints[0];
+      p.n = ints[1];
+      p.a = doubles[0];
+      p.b = doubles[1];
+      p.c = doubles[2];
+      p.f0 = doubles[3];
+      set_derived(p, doubles[4], doubles[5]);
+      coeff_of(i, j) = p;
+      theta0_deg[i * (atom->ntypes + 1) + j] = doubles[4];
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+std::string PairMLP::coeff_args(int i, int j)
+{
+  const MLPCoeff &p = coeff_of(i, j);
+  const double theta0 = theta0_deg[i * (atom->ntypes + 1) + j];
+  std::string central;
+  if (p.central == MLP_HARMONIC)
+    central = fmt::format("harmonic {:.17g} {:.17g}", p.a, p.b);
+  else if (p.central == MLP_MORSE)
+    central = fmt::format("morse {:.17g} {:.17g} {:.17g}", p.a, p.b, p.c);
+  else
+    central = fmt::format("lj {:.17g} {:.17g}", p.a, p.b);
+  return fmt::format("{} {:.17g} {} {:.17g} {:.17g}\n", central, p.f0, p.n, theta0, p.cut);
+}
+
+void PairMLP::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    if (setflag[i][i]) fputs(fmt::format("{} {}", i, coeff_args(i, i)).c_str(), fp);
+}
+
+void PairMLP::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j]) fputs(fmt::format("{} {} {}", i, j, coeff_args(i, j)).c_str(), fp);
+}
+
+/* ----------------------------------------------------------------------
+   "freturn_flag": fix pair's trigger (1: compute |F_return| per atom)
+------------------------------------------------------------------------- */
+
+void *PairMLP::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "freturn_flag") == 0) return (void *) &freturn_flag;
+  return nullptr;
+}
+
+void *PairMLP::extract_peratom(const char *name, int &ncol)
+{
+  if (strcmp(name, "freturn") == 0) {
+    ncol = 0;
+    return (void *) freturn;
+  }
+  return nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairMLP::memory_usage()
+{
+  double bytes = Pair::memory_usage();
+  bytes += (double) coeff_table.size() * sizeof(MLPCoeff);
+  bytes += (double) nmax_freturn * sizeof(double);
+  return bytes;
+}

@@ -1,0 +1,83 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(mlp,PairMLP);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_MLP_H
+#define LMP_PAIR_MLP_H
+
+#include "mca_compat.h"
+#include "mlp_kernels.h"
+#include "pair.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   pair_style mlp: movable lattice particles in 2-D (Popov and Filippov),
+   a central potential plus the return force toward the lattice axes
+   (mlp_kernels.h, doc/src/pair_mlp.rst).  A full neighbour list: each
+   atom sums its own force, so that the per-atom return force needs no
+   reverse communication and results do not depend on newton_pair
+------------------------------------------------------------------------- */
+
+class PairMLP : public Pair {
+ public:
+  PairMLP(class LAMMPS *);
+  ~PairMLP() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void write_data(FILE *) override;
+  void write_data_all(FILE *) override;
+  void *extract(const char *, int &) override;
+  // "freturn": |F_return| per atom (fix pair; LAMMPS 2022 and later)
+  void *extract_peratom(const char *, int &) MCA_EXTRACT_PERATOM_OVERRIDE;
+  double memory_usage() override;
+
+ protected:
+  double cut_global, taper_width;
+  int return_style;    // MLPKernels::MLPReturn
+  // coefficients of each type pair as given (the I <= J record is used
+  // for both orders); the kernels read coeff_table, [i * (ntypes+1) + j]
+  std::vector<MLPKernels::MLPCoeff> coeff_table;
+  // theta0 as given (degrees), for the data file
+  std::vector<double> theta0_deg;
+  // per-atom |F_return| (computed when freturn_flag is set, by fix pair)
+  int freturn_flag, nmax_freturn;
+  double *freturn;
+
+  virtual void allocate();
+  MLPKernels::MLPCoeff &coeff_of(int i, int j);
+  void set_derived(MLPKernels::MLPCoeff &, double theta0_deg, double cut);
+  std::string coeff_args(int i, int j);
+  void grow_freturn();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
