@@ -34,24 +34,16 @@ using namespace FixConst;
 ------------------------------------------------------------------------- */
 
 FixMCADamping::FixMCADamping(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), gamma(0.0), gamma_r(0.0), dissipated(0.0), avec(nullptr)
+    Fix(lmp, narg, arg), gamma(0.0), gamma_r(0.0), avec(nullptr)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix mca/damping (needs gamma)", error);
-  gamma = utils::numeric(FLERR, arg[3], false, lmp);
-  if (!(gamma >= 0.0) || !std::isfinite(gamma))
-    error->all(FLERR, "Fix mca/damping: gamma must be >= 0 and finite (1/time units), got {}",
-               arg[3]);
+  gamma = damping_rate(lmp, "mca/damping", "gamma", arg[3]);
   gamma_r = gamma;
   int iarg = 4;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "angular") == 0) {
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix mca/damping angular", error);
-      gamma_r = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(gamma_r >= 0.0) || !std::isfinite(gamma_r))
-        error->all(FLERR,
-                   "Fix mca/damping: angular gamma_r must be >= 0 and finite (1/time units), "
-                   "got {}",
-                   arg[iarg + 1]);
+      gamma_r = damping_rate(lmp, "mca/damping", "angular gamma_r", arg[iarg + 1]);
       iarg += 2;
     } else {
       error->all(FLERR, "Unknown fix mca/damping keyword {} (allowed: angular)", arg[iarg]);
@@ -97,7 +89,7 @@ void FixMCADamping::setup(int /*vflag*/)
 
 void FixMCADamping::post_force(int /*vflag*/)
 {
-  dissipated += update->dt * apply();
+  dissipated.local += update->dt * apply();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -122,9 +114,7 @@ double FixMCADamping::apply()
 
 double FixMCADamping::compute_scalar()
 {
-  double all = 0.0;
-  MPI_Allreduce(&dissipated, &all, 1, MPI_DOUBLE, MPI_SUM, world);
-  return all;
+  return dissipated.total(world);
 }
 
 /* ----------------------------------------------------------------------
@@ -133,17 +123,10 @@ double FixMCADamping::compute_scalar()
 
 void FixMCADamping::write_restart(FILE *fp)
 {
-  const double all = compute_scalar();
-  if (comm->me == 0) {
-    const int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&all, sizeof(double), 1, fp);
-  }
+  dissipated.write_restart(fp, world, comm->me);
 }
 
 void FixMCADamping::restart(char *buf)
 {
-  double all = 0.0;
-  memcpy(&all, buf, sizeof(double));
-  dissipated = (comm->me == 0) ? all : 0.0;
+  dissipated.restart(buf, comm->me);
 }

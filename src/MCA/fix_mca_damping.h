@@ -21,6 +21,7 @@ FixStyle(mca/damping,FixMCADamping);
 #define LMP_FIX_MCA_DAMPING_H
 
 #include "fix.h"
+#include "mca_damping_fix.h"
 
 namespace LAMMPS_NS {
 
@@ -40,7 +41,7 @@ class FixMCADamping : public Fix {
 
  protected:
   double gamma, gamma_r;        // damping rates of translation and spin (1/time)
-  double dissipated;            // energy taken out on this rank (cumulative)
+  MCAEnergyTally dissipated;    // energy taken out so far
   class MCAAtomFields *avec;    // the fields of atom_style mca
   // the power taken out at this call; tallied times dt in a step of a run
   // (a setup applies the forces and tallies nothing)
