@@ -134,7 +134,12 @@ void FixNVEDampedKokkos<DeviceType>::integrate(double *sums)
 
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), step, sums);
+  // (an array, not a pointer: Kokkos 5 takes an array reduction's result
+  // as an array or a view)
+  double result[2] = {0.0, 0.0};
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), step, result);
+  sums[0] += result[0];
+  sums[1] += result[1];
 
   MCAKokkos::mask_t modified = V_MASK | (HALF ? X_MASK : EMPTY_MASK);
   if (spin) modified |= OMEGA_MASK;
