@@ -100,7 +100,7 @@ template <class DeviceType> void FixNVEDampedKokkos<DeviceType>::init()
 
 template <class DeviceType>
 template <bool HALF>
-void FixNVEDampedKokkos<DeviceType>::integrate(double *sums)
+void FixNVEDampedKokkos<DeviceType>::integrate(double &mvsq, double &jwsq)
 {
   MCAKokkos::mask_t read = X_MASK | V_MASK | F_MASK | MASK_MASK | TYPE_MASK;
   read |= atom->rmass ? RMASS_MASK : EMPTY_MASK;
@@ -138,8 +138,8 @@ void FixNVEDampedKokkos<DeviceType>::integrate(double *sums)
   // as an array or a view)
   double result[2] = {0.0, 0.0};
   Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), step, result);
-  sums[0] += result[0];
-  sums[1] += result[1];
+  mvsq += result[0];
+  jwsq += result[1];
 
   MCAKokkos::mask_t modified = V_MASK | (HALF ? X_MASK : EMPTY_MASK);
   if (spin) modified |= OMEGA_MASK;
@@ -149,19 +149,13 @@ void FixNVEDampedKokkos<DeviceType>::integrate(double *sums)
 template <class DeviceType>
 void FixNVEDampedKokkos<DeviceType>::half_step(double &mvsq, double &jwsq)
 {
-  double sums[2] = {0.0, 0.0};
-  integrate<true>(sums);
-  mvsq += sums[0];
-  jwsq += sums[1];
+  integrate<true>(mvsq, jwsq);
 }
 
 template <class DeviceType>
 void FixNVEDampedKokkos<DeviceType>::full_step(double &mvsq, double &jwsq)
 {
-  double sums[2] = {0.0, 0.0};
-  integrate<false>(sums);
-  mvsq += sums[0];
-  jwsq += sums[1];
+  integrate<false>(mvsq, jwsq);
 }
 
 namespace LAMMPS_NS {

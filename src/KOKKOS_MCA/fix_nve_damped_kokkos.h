@@ -40,7 +40,7 @@ template <class DeviceType> class FixNVEDampedKokkos : public FixNVEDamped {
 
  private:
   class AtomKokkos *atomKK;
-  template <bool HALF> void integrate(double *sums);
+  template <bool HALF> void integrate(double &mvsq, double &jwsq);
 };
 
 }    // namespace LAMMPS_NS

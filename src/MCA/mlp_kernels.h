@@ -50,6 +50,7 @@ namespace MLPKernels {
     int n;             // order of the return force (4 or 6), 0: no return force
     double a, b, c;    // harmonic: K r0 -; Morse: D0 alpha r0; LJ: epsilon sigma -
     double f0;         // amplitude of the return force (force units)
+    double theta0;     // direction of the lattice axes as given (degrees)
     double cos_nt0;    // cos(n theta0), sin(n theta0)
     double sin_nt0;
     double r_ref;    // equilibrium distance of U (conservative return energy)

@@ -70,7 +70,6 @@ void PairMLP::allocate()
   for (int i = 0; i < np1; i++)
     for (int j = 0; j < np1; j++) setflag[i][j] = 0;
   coeff_table.assign(np1 * np1, MLPCoeff());
-  theta0_deg.assign(np1 * np1, 0.0);
 }
 
 MLPCoeff &PairMLP::coeff_of(int i, int j)
@@ -185,7 +184,7 @@ void PairMLP::coeff(int narg, char **arg)
   if (p.n != 4 && p.n != 6)
     error->all(FLERR, "Pair coeff mlp: n must be 4 (square lattice) or 6 (hexagonal), not {}",
                arg[iarg + 1]);
-  const double theta0 = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+  p.theta0 = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
   double cut = cut_global;
   if (narg == iarg + 4) {
     cut = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
@@ -196,8 +195,7 @@ void PairMLP::coeff(int narg, char **arg)
   for (int i = ilo; i <= ihi; i++) {
     for (int j = MAX(jlo, i); j <= jhi; j++) {
       coeff_of(i, j) = p;
-      set_derived(coeff_of(i, j), theta0, cut);
-      theta0_deg[i * (atom->ntypes + 1) + j] = theta0;
+      set_derived(coeff_of(i, j), cut);
       setflag[i][j] = 1;
       count++;
     }
@@ -207,9 +205,9 @@ void PairMLP::coeff(int narg, char **arg)
 
 /* ---------------------------------------------------------------------- */
 
-void PairMLP::set_derived(MLPCoeff &p, double theta0_deg, double cut)
+void PairMLP::set_derived(MLPCoeff &p, double cut)
 {
-  const double nt0 = p.n * theta0_deg * MY_PI / 180.0;
+  const double nt0 = p.n * p.theta0 * MY_PI / 180.0;
   p.cos_nt0 = cos(nt0);
   p.sin_nt0 = sin(nt0);
   if (p.central == MLP_HARMONIC)
@@ -343,8 +341,7 @@ void PairMLP::write_restart(FILE *fp)
       if (!setflag[i][j]) continue;
       const MLPCoeff &p = coeff_of(i, j);
       const int ints[2] = {p.central, p.n};
-      const double doubles[6] = {p.a,  p.b, p.c, p.f0, theta0_deg[i * (atom->ntypes + 1) + j],
-                                 p.cut};
+      const double doubles[6] = {p.a, p.b, p.c, p.f0, p.theta0, p.cut};
       fwrite(ints, sizeof(int), 2, fp);
       fwrite(doubles, sizeof(double), 6, fp);
     }
@@ -375,9 +372,9 @@ void PairMLP::read_restart(FILE *fp)
       p.b = doubles[1];
       p.c = doubles[2];
       p.f0 = doubles[3];
-      set_derived(p, doubles[4], doubles[5]);
+      p.theta0 = doubles[4];
+      set_derived(p, doubles[5]);
       coeff_of(i, j) = p;
-      theta0_deg[i * (atom->ntypes + 1) + j] = doubles[4];
     }
 }
 
@@ -386,7 +383,6 @@ void PairMLP::read_restart(FILE *fp)
 std::string PairMLP::coeff_args(int i, int j)
 {
   const MLPCoeff &p = coeff_of(i, j);
-  const double theta0 = theta0_deg[i * (atom->ntypes + 1) + j];
   std::string central;
   if (p.central == MLP_HARMONIC)
     central = fmt::format("harmonic {:.17g} {:.17g}", p.a, p.b);
@@ -394,7 +390,7 @@ std::string PairMLP::coeff_args(int i, int j)
     central = fmt::format("morse {:.17g} {:.17g} {:.17g}", p.a, p.b, p.c);
   else
     central = fmt::format("lj {:.17g} {:.17g}", p.a, p.b);
-  return fmt::format("{} {:.17g} {} {:.17g} {:.17g}\n", central, p.f0, p.n, theta0, p.cut);
+  return fmt::format("{} {:.17g} {} {:.17g} {:.17g}\n", central, p.f0, p.n, p.theta0, p.cut);
 }
 
 void PairMLP::write_data(FILE *fp)

@@ -64,15 +64,13 @@ class PairMLP : public Pair {
   // coefficients of each type pair as given (the I <= J record is used
   // for both orders); the kernels read coeff_table, [i * (ntypes+1) + j]
   std::vector<MLPKernels::MLPCoeff> coeff_table;
-  // theta0 as given (degrees), for the data file
-  std::vector<double> theta0_deg;
   // per-atom |F_return| (computed when freturn_flag is set, by fix pair)
   int freturn_flag, nmax_freturn;
   double *freturn;
 
   virtual void allocate();
   MLPKernels::MLPCoeff &coeff_of(int i, int j);
-  void set_derived(MLPKernels::MLPCoeff &, double theta0_deg, double cut);
+  void set_derived(MLPKernels::MLPCoeff &, double cut);
   std::string coeff_args(int i, int j);
   void grow_freturn();
 };
