@@ -3,7 +3,8 @@
 2-D hexagonal lattice (in.mlp: 2 nx ny particles at T = 0.02, NVE) for
 LAMMPS's pair morse (a half list: each pair once) and pair mlp with the
 same Morse potential and the return force (literal and conservative; a
-full list: each pair twice), with the CPU styles and the kk styles on 1
+full list: each pair twice; frame: literal with the axes of fix
+mlp/frame, the whole lattice one body measured every step), with the CPU styles and the kk styles on 1
 and 2 threads (the build with KOKKOS).  Reported: the whole step and the
 Pair section per particle-step, best of --repeat runs (the runs of each
 repeat one after the other).
@@ -22,7 +23,7 @@ from run import parse_log
 HERE = os.path.dirname(os.path.abspath(__file__))
 MODES = {"cpu": (), "kk1": ("-k", "on", "t", "1", "-sf", "kk"),
          "kk2": ("-k", "on", "t", "2", "-sf", "kk")}
-STYLES = ("morse", "literal", "conservative")
+STYLES = ("morse", "literal", "conservative", "frame")
 
 
 def run_once(lmp, style, mode, args, outdir):

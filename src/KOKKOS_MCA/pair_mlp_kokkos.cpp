@@ -15,6 +15,8 @@
 
 #include "pair_mlp_kokkos.h"
 
+#include "fix_mlp_frame.h"
+
 #include "atom_kokkos.h"
 #include "atom_masks.h"
 #include "comm.h"
@@ -37,6 +39,7 @@ template <class DeviceType> struct MLPForceKernel {
   view<decltype(AtomKokkos::k_f)> f;
   view<decltype(AtomKokkos::k_type)> type;
   Kokkos::View<MLPCoeff *, DeviceType> coeff;
+  MCAKokkos::double_2d<DeviceType> half_turn;    // with a lattice frame
   typename ArrayTypes<DeviceType>::t_int_1d ilist, numneigh;
   typename ArrayTypes<DeviceType>::t_neighbors_2d neighbors;
   MCAKokkos::double_1d<DeviceType> eatom, freturn;
@@ -45,7 +48,7 @@ template <class DeviceType> struct MLPForceKernel {
   int ntypes1, return_style;
   int eflag_global, eflag_atom, vflag_global, vflag_atom, freturn_flag;
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int ii, EV_FLOAT &ev) const
+  template <int FRAME> KOKKOS_INLINE_FUNCTION void eval(const int ii, EV_FLOAT &ev) const
   {
     const int i = ilist(ii);
     const double xi = x(i, 0), yi = x(i, 1);
@@ -61,7 +64,15 @@ template <class DeviceType> struct MLPForceKernel {
       const double rsq = dx * dx + dy * dy;
       const MLPCoeff &p = coeff(row + type(j));
       if (rsq >= p.cutsq) continue;
-      const MLPPairForce out = pair_force(p, return_style, dx, dy, rsq, factor);
+      MLPPairForce out;
+      if (FRAME) {
+        double cos_nt, sin_nt;
+        turned_axes(p, half_turn(i, 0), half_turn(i, 1), half_turn(j, 0), half_turn(j, 1), cos_nt,
+                    sin_nt);
+        out = pair_force(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt);
+      } else {
+        out = pair_force(p, return_style, dx, dy, rsq, factor);
+      }
       fx += out.fx;
       fy += out.fy;
       rx += out.rx;
@@ -81,6 +92,32 @@ template <class DeviceType> struct MLPForceKernel {
     if (vflag_atom)
       for (int k = 0; k < 6; k++) vatom(i, k) += v[k];
     if (freturn_flag) freturn(i) = sqrt(rx * rx + ry * ry);
+  }
+};
+
+template <class DeviceType, int FRAME> struct MLPForceCall {
+  MLPForceKernel<DeviceType> kernel;
+  KOKKOS_INLINE_FUNCTION void operator()(const int ii, EV_FLOAT &ev) const
+  {
+    kernel.template eval<FRAME>(ii, ev);
+  }
+};
+
+// (cos a/2, sin a/2) of each atom's body angle a (fix mlp/frame)
+template <class DeviceType> struct MLPHalfTurnKernel {
+  template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
+  view<decltype(AtomKokkos::k_mask)> mask;
+  view<decltype(AtomKokkos::k_molecule)> molecule;
+  MCAKokkos::double_1d<DeviceType> angle;
+  MCAKokkos::double_2d<DeviceType> half_turn;
+  int groupbit, by_molecule, nbody;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    const int b = frame_body(mask(i), groupbit, by_molecule, by_molecule ? molecule(i) : 0, nbody);
+    const double a = (b < 0) ? 0.0 : angle(b);
+    half_turn(i, 0) = cos(0.5 * a);
+    half_turn(i, 1) = sin(0.5 * a);
   }
 };
 
@@ -116,6 +153,7 @@ template <class DeviceType> void PairMLPKokkos<DeviceType>::init_style()
                "Pair style mlp/kk requires dimension 2 (the return force toward the lattice "
                "axes is defined in the plane; doc/src/pair_mlp.rst)");
   MCAKokkos::request_kokkos_full_list<DeviceType>(neighbor, this, instance_me);
+  find_frame();
 }
 
 /* ----------------------------------------------------------------------
@@ -176,7 +214,14 @@ template <class DeviceType> void PairMLPKokkos<DeviceType>::compute(int eflag, i
   kernel.freturn_flag = freturn_flag;
 
   EV_FLOAT ev;
-  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, klist->inum), kernel, ev);
+  if (frame) {
+    kernel.half_turn = frame_half_turns_on_device();
+    MLPForceCall<DeviceType, 1> call{kernel};
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, klist->inum), call, ev);
+  } else {
+    MLPForceCall<DeviceType, 0> call{kernel};
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, klist->inum), call, ev);
+  }
 
   if (eflag_global) eng_vdwl += ev.evdwl;
   if (vflag_global)
@@ -186,6 +231,37 @@ template <class DeviceType> void PairMLPKokkos<DeviceType>::compute(int eflag, i
     k_freturn.template modify<DeviceType>();
     k_freturn.sync_host();
   }
+}
+
+/* ----------------------------------------------------------------------
+   the half turns of the owned and ghost atoms, from the body angles of the
+   frame fix (a host fix: its few angles are copied each step)
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+MCAKokkos::double_2d<DeviceType> PairMLPKokkos<DeviceType>::frame_half_turns_on_device()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if ((int) d_half_turn.extent(0) < nall)
+    d_half_turn = MCAKokkos::double_2d<DeviceType>("pair:mlp_half_turn", atom->nmax, 2);
+  if ((int) k_body_angle.extent(0) != frame->nbody)
+    k_body_angle = MCAKokkos::dual_double_1d("pair:mlp_body_angle", frame->nbody);
+  for (int b = 0; b < frame->nbody; b++) k_body_angle.view_host()(b) = frame->body_angles()[b];
+  k_body_angle.modify_host();
+  k_body_angle.template sync<DeviceType>();
+  MCAKokkos::mask_t mask = MASK_MASK;
+  if (frame->by_molecule) mask |= MOLECULE_MASK;
+  atomKK->sync(execution_space, mask);
+  MLPHalfTurnKernel<DeviceType> turn;
+  turn.mask = atomKK->k_mask.template view<DeviceType>();
+  if (frame->by_molecule) turn.molecule = atomKK->k_molecule.template view<DeviceType>();
+  turn.angle = k_body_angle.template view<DeviceType>();
+  turn.half_turn = d_half_turn;
+  turn.groupbit = frame->groupbit;
+  turn.by_molecule = frame->by_molecule;
+  turn.nbody = frame->nbody;
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nall), turn);
+  return d_half_turn;
 }
 
 namespace LAMMPS_NS {

@@ -51,6 +51,9 @@ class PairMLPKokkos : private MCAKokkos::RequiresKokkos, public PairMLP {
   MCAKokkos::PairTally tally;    // per-atom energy and virial
   MCAKokkos::dual_double_1d k_freturn;
   int kk_nmax;
+  MCAKokkos::double_2d<DeviceType> d_half_turn;
+  MCAKokkos::dual_double_1d k_body_angle;
+  MCAKokkos::double_2d<DeviceType> frame_half_turns_on_device();
 };
 
 }    // namespace LAMMPS_NS

@@ -109,26 +109,49 @@ namespace MLPKernels {
     ds = -30.0 * t * t * (1.0 - t) * (1.0 - t) / w;
   }
 
-  // sin and cos of n (phi - theta0) for the unit vector (ux, uy) = d / r
-  MCA_INLINE void return_angle(const MLPCoeff &p, double ux, double uy, double &sn, double &cn)
+  // z^n of a unit complex number z = (re, im), n = 4 or 6 (z^2, z^4, z^6)
+  MCA_INLINE void unit_power(int n, double zr, double zi, double &re, double &im)
   {
-    // z^2, z^4, z^6 of z = ux + i uy
-    const double re2 = ux * ux - uy * uy, im2 = 2.0 * ux * uy;
-    double re = re2 * re2 - im2 * im2, im = 2.0 * re2 * im2;
-    if (p.n == 6) {
+    const double re2 = zr * zr - zi * zi, im2 = 2.0 * zr * zi;
+    re = re2 * re2 - im2 * im2;
+    im = 2.0 * re2 * im2;
+    if (n == 6) {
       const double re6 = re * re2 - im * im2;
       im = re * im2 + im * re2;
       re = re6;
     }
-    // times e^{-i n theta0}
-    cn = re * p.cos_nt0 + im * p.sin_nt0;
-    sn = im * p.cos_nt0 - re * p.sin_nt0;
+  }
+
+  // sin and cos of n (phi - theta) for the unit vector (ux, uy) = d / r,
+  // with (cos_nt, sin_nt) = (cos n theta, sin n theta) of the pair's axes
+  MCA_INLINE void return_angle(const MLPCoeff &p, double ux, double uy, double cos_nt,
+                               double sin_nt, double &sn, double &cn)
+  {
+    double re, im;
+    unit_power(p.n, ux, uy, re, im);
+    // times e^{-i n theta}
+    cn = re * cos_nt + im * sin_nt;
+    sn = im * cos_nt - re * sin_nt;
+  }
+
+  // a body's lattice frame: each atom carries (cos a/2, sin a/2) of the
+  // angle a its body has turned (fix mlp/frame); a pair's axes turn by the
+  // mean (a_i + a_j)/2, i.e. e^{i n theta} becomes e^{i n theta0} (z_i z_j)^n.
+  // For the even n of the style the two means of a pair of angles, which
+  // differ by pi, give the same axes, so the angles need no unwrapping
+  MCA_INLINE void turned_axes(const MLPCoeff &p, double ci, double si, double cj, double sj,
+                              double &cos_nt, double &sin_nt)
+  {
+    double re, im;
+    unit_power(p.n, ci * cj - si * sj, ci * sj + si * cj, re, im);
+    cos_nt = p.cos_nt0 * re - p.sin_nt0 * im;
+    sin_nt = p.sin_nt0 * re + p.cos_nt0 * im;
   }
 
   // the force of pair (i, j) on i, d = x_i - x_j, rsq = |d|^2 < cutsq;
-  // factor: the special-bond factor
+  // factor: the special-bond factor; (cos_nt, sin_nt): the pair's axes
   MCA_INLINE MLPPairForce pair_force(const MLPCoeff &p, int return_style, double dx, double dy,
-                                     double rsq, double factor)
+                                     double rsq, double factor, double cos_nt, double sin_nt)
   {
     MLPPairForce out;
     const double r = sqrt(rsq);
@@ -141,7 +164,7 @@ namespace MLPKernels {
     double tangential = 0.0, e_return = 0.0, radial_return = 0.0;
     if (p.n > 0 && p.f0 != 0.0) {
       double sn, cn;
-      return_angle(p, ux, uy, sn, cn);
+      return_angle(p, ux, uy, cos_nt, sin_nt, sn, cn);
       if (return_style == MLP_LITERAL) {
         tangential = -p.f0 * s * sn;
       } else {
@@ -159,6 +182,22 @@ namespace MLPKernels {
     out.fy = factor * (radial * uy + tangential * ux);
     out.energy = factor * (s * u + e_return);
     return out;
+  }
+
+  // the body of an atom in a lattice frame (fix mlp/frame): its group's one
+  // body, or its molecule's (IDs 1 to nbody); -1: none (its axes stay put)
+  MCA_INLINE int frame_body(int mask, int groupbit, int by_molecule, long long molecule, int nbody)
+  {
+    if (!(mask & groupbit)) return -1;
+    if (!by_molecule) return 0;
+    return (molecule >= 1 && molecule <= nbody) ? static_cast<int>(molecule - 1) : -1;
+  }
+
+  // ... with the axes of the type pair (no lattice frame)
+  MCA_INLINE MLPPairForce pair_force(const MLPCoeff &p, int return_style, double dx, double dy,
+                                     double rsq, double factor)
+  {
+    return pair_force(p, return_style, dx, dy, rsq, factor, p.cos_nt0, p.sin_nt0);
   }
 
 }    // namespace MLPKernels

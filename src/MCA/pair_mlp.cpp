@@ -19,8 +19,10 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_mlp_frame.h"
 #include "force.h"
 #include "math_const.h"
+#include "mca_compat.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -37,7 +39,7 @@ using MathConst::MY_PI;
 
 PairMLP::PairMLP(LAMMPS *lmp) :
     Pair(lmp), cut_global(0.0), taper_width(0.0), return_style(MLP_LITERAL), freturn_flag(0),
-    nmax_freturn(0), freturn(nullptr)
+    nmax_freturn(0), freturn(nullptr), frame(nullptr)
 {
   // the force is not central: no single(), and the virial is tallied pair
   // by pair (a full list leaves the ghosts without forces for fdotr)
@@ -79,6 +81,7 @@ MLPCoeff &PairMLP::coeff_of(int i, int j)
 
 /* ----------------------------------------------------------------------
    pair_style mlp cutoff [return literal|conservative] [taper width]
+                         [frame fix-ID|none]
 ------------------------------------------------------------------------- */
 
 void PairMLP::settings(int narg, char **arg)
@@ -88,6 +91,7 @@ void PairMLP::settings(int narg, char **arg)
   if (cut_global <= 0.0) error->all(FLERR, "Pair style mlp: cutoff must be > 0, not {}", arg[0]);
   return_style = MLP_LITERAL;
   taper_width = 0.0;
+  frame_id.clear();
   int iarg = 1;
   while (iarg < narg) {
     if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style mlp", error);
@@ -104,8 +108,11 @@ void PairMLP::settings(int narg, char **arg)
       if (taper_width < 0.0 || taper_width >= cut_global)
         error->all(FLERR, "Pair style mlp: taper width must be >= 0 and < the cutoff {}, not {}",
                    cut_global, arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "frame") == 0) {
+      frame_id = (strcmp(arg[iarg + 1], "none") == 0) ? "" : arg[iarg + 1];
     } else {
-      error->all(FLERR, "Pair style mlp: unknown keyword {} (allowed: return, taper)", arg[iarg]);
+      error->all(FLERR, "Pair style mlp: unknown keyword {} (allowed: return, taper, frame)",
+                 arg[iarg]);
     }
     iarg += 2;
   }
@@ -228,6 +235,24 @@ void PairMLP::init_style()
                "Pair style mlp requires dimension 2 (the return force toward the lattice axes "
                "is defined in the plane; doc/src/pair_mlp.rst)");
   MCACompat::request_full_list(neighbor, this, instance_me, 0);
+  find_frame();
+}
+
+/* ----------------------------------------------------------------------
+   the fix mlp/frame named by the frame keyword (init_style of both styles)
+------------------------------------------------------------------------- */
+
+void PairMLP::find_frame()
+{
+  frame = nullptr;
+  if (!frame_id.empty()) {
+    Fix *fix = MCACompat::fix_by_id(modify, frame_id);
+    if (!fix) error->all(FLERR, "Pair style mlp: frame {}: there is no fix with that ID", frame_id);
+    frame = dynamic_cast<FixMLPFrame *>(fix);
+    if (!frame || strcmp(fix->style, "mlp/frame") != 0)
+      error->all(FLERR, "Pair style mlp: frame {} must be a fix mlp/frame, not fix {}", frame_id,
+                 fix->style);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -266,7 +291,38 @@ void PairMLP::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (freturn_flag) grow_freturn();
+  if (frame) {
+    frame_half_turns();
+    eval<1>();
+  } else {
+    eval<0>();
+  }
+}
 
+/* ----------------------------------------------------------------------
+   (cos a/2, sin a/2) of each atom's body angle a (0 outside the bodies)
+------------------------------------------------------------------------- */
+
+void PairMLP::frame_half_turns()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  half_turn.resize(2 * (size_t) nall);
+  const int *mask = atom->mask;
+  const tagint *molecule = atom->molecule;
+  const double *angle = frame->body_angles();
+  for (int i = 0; i < nall; i++) {
+    const int b = frame_body(mask[i], frame->groupbit, frame->by_molecule,
+                             frame->by_molecule ? molecule[i] : 0, frame->nbody);
+    const double a = (b < 0) ? 0.0 : angle[b];
+    half_turn[2 * i] = cos(0.5 * a);
+    half_turn[2 * i + 1] = sin(0.5 * a);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <int FRAME> void PairMLP::eval()
+{
   double **x = atom->x;
   double **f = atom->f;
   const int *type = atom->type;
@@ -293,7 +349,15 @@ void PairMLP::compute(int eflag, int vflag)
       const double rsq = dx * dx + dy * dy;
       const MLPCoeff &p = row[type[j]];
       if (rsq >= p.cutsq) continue;
-      const MLPPairForce out = pair_force(p, return_style, dx, dy, rsq, factor);
+      MLPPairForce out;
+      if (FRAME) {
+        double cos_nt, sin_nt;
+        turned_axes(p, half_turn[2 * i], half_turn[2 * i + 1], half_turn[2 * j],
+                    half_turn[2 * j + 1], cos_nt, sin_nt);
+        out = pair_force(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt);
+      } else {
+        out = pair_force(p, return_style, dx, dy, rsq, factor);
+      }
       fx += out.fx;
       fy += out.fy;
       rx += out.rx;
@@ -313,6 +377,9 @@ void PairMLP::write_restart_settings(FILE *fp)
   fwrite(&cut_global, sizeof(double), 1, fp);
   fwrite(&taper_width, sizeof(double), 1, fp);
   fwrite(&return_style, sizeof(int), 1, fp);
+  const int n = (int) frame_id.size();
+  fwrite(&n, sizeof(int), 1, fp);
+  fwrite(frame_id.data(), sizeof(char), n, fp);
 }
 
 void PairMLP::read_restart_settings(FILE *fp)
@@ -325,6 +392,13 @@ void PairMLP::read_restart_settings(FILE *fp)
   MPI_Bcast(&cut_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&taper_width, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&return_style, 1, MPI_INT, 0, world);
+  int n = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &n, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  std::vector<char> id(n + 1, '\0');
+  if (comm->me == 0 && n > 0) utils::sfread(FLERR, id.data(), sizeof(char), n, fp, nullptr, error);
+  MPI_Bcast(id.data(), n, MPI_CHAR, 0, world);
+  frame_id = id.data();
 }
 
 /* ----------------------------------------------------------------------

@@ -73,6 +73,17 @@ class PairMLP : public Pair {
   void set_derived(MLPKernels::MLPCoeff &, double cut);
   std::string coeff_args(int i, int j);
   void grow_freturn();
+
+  // a co-rotating lattice frame (fix mlp/frame): (cos a/2, sin a/2) of the
+  // angle a each atom's body has turned, owned and ghost atoms
+  std::string frame_id;
+  class FixMLPFrame *frame;
+  std::vector<double> half_turn;
+  void find_frame();
+  void frame_half_turns();
+
+ private:
+  template <int FRAME> void eval();
 };
 
 }    // namespace LAMMPS_NS

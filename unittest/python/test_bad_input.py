@@ -222,7 +222,27 @@ CASES = [
     ("mlp return", MLP_BOX + "pair_style mlp 1.3 return paper\n",
      r"Pair style mlp: return must be literal or conservative, not paper"),
     ("mlp keyword", MLP_BOX + "pair_style mlp 1.3 shift yes\n",
-     r"Pair style mlp: unknown keyword shift \(allowed: return, taper\)"),
+     r"Pair style mlp: unknown keyword shift \(allowed: return, taper, frame\)"),
+    ("mlp frame missing", MLP_BOX + "pair_style mlp 1.3 frame fr\n"
+     "pair_coeff * * harmonic 2 1 0.05 6 0\nrun 0\n",
+     r"Pair style mlp: frame fr: there is no fix with that ID"),
+    ("mlp frame style", MLP_BOX + "pair_style mlp 1.3 frame fr\n"
+     "pair_coeff * * harmonic 2 1 0.05 6 0\nfix fr all nve\nrun 0\n",
+     r"Pair style mlp: frame fr must be a fix mlp/frame, not fix nve"),
+    ("frame N", MLP_BOX + "fix fr all mlp/frame 0\n",
+     r"Fix mlp/frame: N must be an integer >= 1, not 0"),
+    ("frame body", MLP_BOX + "fix fr all mlp/frame 1 body grain\n",
+     r"Fix mlp/frame: body must be group or molecule, not grain"),
+    ("frame molecule", MLP_BOX + "fix fr all mlp/frame 1 body molecule\n",
+     r"Fix mlp/frame body molecule requires an atom style with molecule IDs "
+     r"\(atom_style atomic has none\)"),
+    ("frame keyword", MLP_BOX + "fix fr all mlp/frame 1 every 2\n",
+     r"Fix mlp/frame: unknown keyword every \(allowed: body\)"),
+    ("frame empty", MLP_BOX + "group none empty\nfix fr none mlp/frame 1\n",
+     r"Fix mlp/frame: group none has no atoms of positive mass"),
+    ("frame 3d", MLP_3D.replace("pair_style      mlp 1.3\n",
+                                "fix fr all mlp/frame 1\npair_style      mlp 1.3\n"),
+     r"Fix mlp/frame requires dimension 2"),
     ("mlp mixing", MLP_BOX + "pair_style mlp 1.3\npair_coeff 1 1 harmonic 2 1 0.05 6 0\n"
      "pair_coeff 2 2 harmonic 2 1 0.05 6 0\nrun 0\n",
      r"Pair style mlp: no coefficients for types 1 2 .*no mixing rule"),
