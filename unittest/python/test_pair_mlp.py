@@ -201,8 +201,10 @@ def lattice_sums(q, c=1.0):
     return s0, sl, st
 
 
-def wave_stiffness(build, directory, central, f0, style, polarization, nx=24, ny=14, eps=1e-5):
-    """D of a sinusoidal displacement eps e sin(q x), q = 2 pi / Lx, from the forces."""
+def wave_stiffness(build, directory, central, f0, style, polarization, nx=24, ny=14, eps=1e-5,
+                   coeff=None):
+    """D of a sinusoidal displacement eps e sin(q x), q = 2 pi / Lx, from the forces;
+    coeff: the pair_coeff words after "1 1" (default: CENTRAL[central], f0, n 6)."""
     sites = hex_sites(nx, ny)
     q = 2.0 * math.pi / nx
     e = np.array([1.0, 0.0]) if polarization == "L" else np.array([0.0, 1.0])
@@ -210,7 +212,7 @@ def wave_stiffness(build, directory, central, f0, style, polarization, nx=24, ny
     data = data_file(directory / f"wave{polarization}.data", sites + eps * np.outer(wave, e),
                      ((-0.25, nx - 0.25), (-0.25, ny * SQRT3 - 0.25)))
     script = header(data.name) + (f"pair_style mlp 1.3 return {style} taper 0.2\n"
-                                  f"pair_coeff 1 1 {CENTRAL[central][0]} {f0} 6 0.0\n")
+                                  f"pair_coeff 1 1 {coeff or f'{CENTRAL[central][0]} {f0} 6 0.0'}\n")
     snap = forces_of(build, directory, script, f"wave{polarization}")
     force = np.stack([snap["fx"], snap["fy"]], axis=1)
     # the forces' projection on the mode: -D eps (the other component is 0)

@@ -1,0 +1,224 @@
+#!/usr/bin/python3
+"""Elastic constants of 2-D hexagonal particle lattices and the spring and
+pair parameters that give them (doc/src/Howto_mlp.rst, "Calibrating a
+lattice"; the NUMFRAC/MLP notes, Part A.4 and Part B.2).
+
+Two lattices of nearest-neighbour bonds (spacing c, triangular, the area
+per particle sqrt(3) c^2 / 2; moduli per unit area of the plane, i.e. per
+unit thickness):
+
+* MLP, movable lattice particles (pair_style mlp): each bond is the linear
+  spring k1 I + k2 e e^T of the paper's Eq. 2 on the full relative
+  displacement; k1 = n f0 / c (the return force), k2 = U''(c) - k1.  The
+  k1 part is not objective: mu = sqrt3 (k1 + k2/4), lambda = sqrt3 (k2/4 - k1)
+  (the corrected Eq. 11; the paper's has half these values).
+* beams and shear beams (NUMFRAC): a normal stiffness k_n and an objective
+  transverse stiffness k_s on the strain part of the relative displacement
+  (the particles' rotations relax): mu = (sqrt3/4)(k_n + k_s),
+  lambda = (sqrt3/4)(k_n - k_s).  An Euler-Bernoulli beam has k_n = EA/L,
+  k_s = 12 EI/L^3; a shear beam of rotational stiffness k_r has
+  k_s = 2 k_r / L0^2.
+
+Both reach only nu_2D <= 1/3 with a restoring transverse stiffness
+(k1 >= 0, k_s >= 0): nu <= 1/4 in plane strain (nu_2D = nu / (1 - nu)).
+
+Command line (prints the parameters and the moduli they give back):
+
+  tools/lattice_calibration.py mlp  --E2 E --nu2 NU [--c 1] [--n 6]
+                                    [--potential harmonic|morse|lj] [--D0 1]
+  tools/lattice_calibration.py beam --E2 E --nu2 NU [--c 1] [--E-bond E]
+  (--E E --nu NU --thickness T --plane strain|stress instead of --E2 --nu2)
+
+From Python: import lattice_calibration as lc; lc.mlp_springs(E2, nu2) ...
+"""
+
+import argparse
+import math
+import sys
+
+SQRT3 = math.sqrt(3.0)
+
+
+class CalibrationError(ValueError):
+    """Moduli that the lattice cannot have."""
+
+
+# --------------------------------------------------------------------------
+# isotropic 2-D elasticity
+
+
+def lame(e2, nu2):
+    """(mu, lambda) of a 2-D isotropic medium from E_2D and nu_2D."""
+    if not -1.0 < nu2 < 1.0:
+        raise CalibrationError(f"nu_2D = {nu2:g} must be in (-1, 1)")
+    if e2 <= 0.0:
+        raise CalibrationError(f"E_2D = {e2:g} must be > 0")
+    return e2 / (2.0 * (1.0 + nu2)), e2 * nu2 / ((1.0 + nu2) * (1.0 - nu2))
+
+
+def young(mu, lam):
+    """(E_2D, nu_2D) from the 2-D Lame constants."""
+    return 4.0 * mu * (lam + mu) / (lam + 2.0 * mu), lam / (lam + 2.0 * mu)
+
+
+def in_plane(e, nu, thickness=1.0, plane="strain"):
+    """(E_2D, nu_2D) of a 3-D material (E, nu) in plane strain or plane
+    stress, per layer of the given thickness."""
+    if plane == "strain":
+        return thickness * e / (1.0 - nu * nu), nu / (1.0 - nu)
+    if plane == "stress":
+        return thickness * e, nu
+    raise CalibrationError(f"plane must be strain or stress, not {plane}")
+
+
+def moduli(mu, lam):
+    e2, nu2 = young(mu, lam)
+    return {"mu": mu, "lambda": lam, "E2": e2, "nu2": nu2, "K2": lam + mu}
+
+
+def _check_reachable(nu2, model):
+    # a little room for round-off at the limit itself (f0 = 0, k_s = 0)
+    if nu2 > 1.0 / 3.0 + 1e-12:
+        raise CalibrationError(
+            f"nu_2D = {nu2:g} > 1/3: a {model} lattice with a restoring transverse stiffness "
+            "reaches at most 1/3 (nu <= 1/4 in plane strain)")
+
+
+# --------------------------------------------------------------------------
+# movable lattice particles (pair_style mlp)
+
+
+def mlp_moduli(k1, k2):
+    """Moduli of the hexagonal k1/k2 lattice (corrected Eq. 11)."""
+    return moduli(SQRT3 * (k1 + k2 / 4.0), SQRT3 * (k2 / 4.0 - k1))
+
+
+def mlp_springs(e2, nu2):
+    """(k1, k2) that give E_2D and nu_2D."""
+    _check_reachable(nu2, "movable lattice particle")
+    mu, lam = lame(e2, nu2)
+    return (mu - lam) / (2.0 * SQRT3), 2.0 * (lam + mu) / SQRT3
+
+
+def mlp_pair(e2, nu2, c=1.0, n=6):
+    """(U''(c), f0) of pair_style mlp for E_2D, nu_2D on a hexagonal lattice
+    of spacing c: k1 = n f0 / c, U'' = k1 + k2."""
+    if n != 6:
+        raise CalibrationError("the isotropic moduli are those of the hexagonal lattice (n = 6); "
+                               "a square lattice (n = 4) is cubic: C11 = U'', C44 = 4 f0 / c")
+    k1, k2 = mlp_springs(e2, nu2)
+    return k1 + k2, c * k1 / n
+
+
+def central_potential(kind, upp, c=1.0, d0=1.0):
+    """pair_coeff words of a central potential with its minimum at c and the
+    curvature U''(c) = upp: harmonic K r0; morse D0 alpha r0 (2 alpha^2 D0 =
+    U'', D0 given); lj epsilon sigma (sigma = 2^(-1/6) c)."""
+    if upp <= 0.0:
+        raise CalibrationError(f"U'' = {upp:g} must be > 0")
+    if kind == "harmonic":
+        return f"harmonic {upp:.12g} {c:.12g}"
+    if kind == "morse":
+        if d0 <= 0.0:
+            raise CalibrationError(f"D0 = {d0:g} must be > 0")
+        return f"morse {d0:.12g} {math.sqrt(upp / (2.0 * d0)):.12g} {c:.12g}"
+    if kind == "lj":
+        sigma = c * 2.0 ** (-1.0 / 6.0)
+        return f"lj {2.0 ** (1.0 / 3.0) * sigma * sigma * upp / 72.0:.12g} {sigma:.12g}"
+    raise CalibrationError(f"potential must be harmonic, morse or lj, not {kind}")
+
+
+# --------------------------------------------------------------------------
+# beams and shear beams (NUMFRAC)
+
+
+def beam_moduli(kn, ks):
+    """Moduli of the hexagonal lattice of normal stiffness k_n and objective
+    transverse stiffness k_s (rotations relaxed)."""
+    return moduli(SQRT3 / 4.0 * (kn + ks), SQRT3 / 4.0 * (kn - ks))
+
+
+def beam_springs(e2, nu2):
+    """(k_n, k_s) that give E_2D and nu_2D:
+    k_n = E_2D / (sqrt3 (1 - nu_2D)), k_s = E_2D (1 - 3 nu_2D) / (sqrt3 (1 - nu_2D^2))."""
+    _check_reachable(nu2, "beam")
+    lame(e2, nu2)    # the range checks
+    return e2 / (SQRT3 * (1.0 - nu2)), e2 * (1.0 - 3.0 * nu2) / (SQRT3 * (1.0 - nu2 * nu2))
+
+
+def beam_stiffness(e, area, inertia, length):
+    """(k_n, k_s) of an Euler-Bernoulli beam: EA/L, 12 EI/L^3."""
+    for name, value in (("E", e), ("A", area), ("I", inertia), ("L", length)):
+        if value <= 0.0:
+            raise CalibrationError(f"{name} = {value:g} must be > 0")
+    return e * area / length, 12.0 * e * inertia / length ** 3
+
+
+def rectangular_beam_nu2(height_over_length):
+    """nu_2D of the lattice of rectangular beams of height h per unit
+    thickness (k_s / k_n = (h/L)^2)."""
+    r = height_over_length * height_over_length
+    return (1.0 - r) / (3.0 + r)
+
+
+def shear_beam_kr(ks, length):
+    """The rotational stiffness k_r of a shear beam with the transverse
+    stiffness k_s: k_s = 2 k_r / L0^2."""
+    return 0.5 * ks * length * length
+
+
+# --------------------------------------------------------------------------
+# command line
+
+
+def _report(lines, values):
+    lines.append("moduli given back: " + ", ".join(f"{k} {v:.10g}" for k, v in values.items()))
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("lattice", choices=("mlp", "beam"))
+    ap.add_argument("--E2", type=float, help="2-D Young's modulus (energy / area)")
+    ap.add_argument("--nu2", type=float, help="2-D Poisson ratio")
+    ap.add_argument("--E", type=float, help="3-D Young's modulus (with --nu, --thickness)")
+    ap.add_argument("--nu", type=float, help="3-D Poisson ratio")
+    ap.add_argument("--thickness", type=float, default=1.0)
+    ap.add_argument("--plane", choices=("strain", "stress"), default="strain")
+    ap.add_argument("--c", type=float, default=1.0, help="lattice spacing")
+    ap.add_argument("--potential", choices=("harmonic", "morse", "lj"), default="harmonic")
+    ap.add_argument("--D0", type=float, default=1.0, help="Morse bond energy")
+    ap.add_argument("--E-bond", type=float, default=None,
+                    help="beam: the beam material's E (gives A and I of the section)")
+    args = ap.parse_args(argv)
+    try:
+        if args.E2 is not None and args.nu2 is not None:
+            e2, nu2 = args.E2, args.nu2
+        elif args.E is not None and args.nu is not None:
+            e2, nu2 = in_plane(args.E, args.nu, args.thickness, args.plane)
+        else:
+            raise CalibrationError("give --E2 and --nu2, or --E and --nu")
+        lines = [f"target: E_2D {e2:.10g}, nu_2D {nu2:.10g}, spacing c {args.c:g}"]
+        if args.lattice == "mlp":
+            upp, f0 = mlp_pair(e2, nu2, args.c)
+            k1, k2 = mlp_springs(e2, nu2)
+            lines += [f"k1 {k1:.10g}, k2 {k2:.10g}, U''(c) {upp:.10g}, f0 {f0:.10g}",
+                      f"pair_coeff * * {central_potential(args.potential, upp, args.c, args.D0)}"
+                      f" {f0:.12g} 6 0.0"]
+            print(_report(lines, mlp_moduli(k1, k2)))
+        else:
+            kn, ks = beam_springs(e2, nu2)
+            lines.append(f"k_n {kn:.10g}, k_s {ks:.10g}, shear beam k_r {shear_beam_kr(ks, args.c):.10g}")
+            if args.E_bond:
+                # EA / c = k_n, 12 EI / c^3 = k_s
+                lines.append(f"beam of E {args.E_bond:g}: A {kn * args.c / args.E_bond:.10g}, "
+                             f"I {ks * args.c ** 3 / (12.0 * args.E_bond):.10g}")
+            print(_report(lines, beam_moduli(kn, ks)))
+    except CalibrationError as err:
+        print(f"lattice_calibration: {err}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

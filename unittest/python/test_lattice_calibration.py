@@ -1,0 +1,112 @@
+"""tools/lattice_calibration.py: the elastic constants of hexagonal
+particle lattices and the parameters that give them (doc/src/Howto_mlp.rst;
+NUMFRAC/MLP notes A.4, B.2, reference cases 6-8):
+
+* each map and its inverse give the moduli back to round-off (1e-12) over
+  the reachable range of nu_2D (-0.9 to 1/3) for both lattices;
+* the notes' figures: case 6 (central springs: mu = lambda = sqrt3 k / 4,
+  nu_2D 1/3, E_2D 2k / sqrt3), case 7 (rectangular beams, h/L 0.1, 0.3,
+  0.6: nu_2D 0.3289, 0.2945, 0.1905), case 8 (k1 0.3, k2 1.7: mu 1.2557,
+  lambda 0.2165, nu_2D 0.0794), to the printed digits;
+* a lattice of pair_style mlp built from the tool's parameters for a
+  target E_2D and nu_2D has them: its long-wave stiffness (two wavelengths,
+  extrapolated to q -> 0, independent of the corrected Eq. 11) gives E_2D
+  and nu_2D to 1e-5;
+* nu_2D above 1/3 (unreachable with a restoring transverse stiffness) is
+  refused with the reason, on the command line too.
+"""
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import mcatest
+from test_pair_mlp import wave_stiffness
+
+sys.path.insert(0, str(mcatest.ROOT / "tools"))
+import lattice_calibration as lc  # noqa: E402
+
+SQRT3 = math.sqrt(3.0)
+TOOL = mcatest.ROOT / "tools" / "lattice_calibration.py"
+
+
+@pytest.mark.parametrize("nu2", np.linspace(-0.9, 1.0 / 3.0, 9))
+def test_maps_and_inverses_agree(nu2):
+    for springs, moduli in ((lc.mlp_springs, lc.mlp_moduli), (lc.beam_springs, lc.beam_moduli)):
+        a, b = springs(2.7, nu2)
+        back = moduli(a, b)
+        assert back["E2"] == pytest.approx(2.7, rel=1e-12)
+        assert back["nu2"] == pytest.approx(nu2, abs=1e-12)
+        mu, lam = lc.lame(2.7, nu2)
+        assert back["mu"] == pytest.approx(mu, rel=1e-12)
+        assert back["lambda"] == pytest.approx(lam, rel=1e-12, abs=1e-12)
+    e2, nu = lc.in_plane(70.0, 0.25, 2.0, "strain")
+    assert (e2, nu) == (pytest.approx(2.0 * 70.0 / (1.0 - 0.0625)), pytest.approx(1.0 / 3.0))
+
+
+def test_reference_cases():
+    k = 1.7
+    central = lc.mlp_moduli(0.0, k)
+    assert central["mu"] == pytest.approx(SQRT3 * k / 4.0, rel=1e-14)
+    assert central["lambda"] == pytest.approx(SQRT3 * k / 4.0, rel=1e-14)
+    assert central["nu2"] == pytest.approx(1.0 / 3.0, rel=1e-14)
+    assert central["E2"] == pytest.approx(2.0 * k / SQRT3, rel=1e-14)
+    assert lc.beam_moduli(k, 0.0) == pytest.approx(central, rel=1e-14)
+    case8 = lc.mlp_moduli(0.3, 1.7)
+    assert [round(case8[q], 4) for q in ("mu", "lambda", "nu2")] == [1.2557, 0.2165, 0.0794]
+    for h, nu_ref in ((0.1, 0.3289), (0.3, 0.2945), (0.6, 0.1905)):
+        kn, ks = lc.beam_stiffness(200.0, h, h ** 3 / 12.0, 1.0)    # per unit thickness
+        assert round(lc.beam_moduli(kn, ks)["nu2"], 4) == nu_ref
+        assert round(lc.rectangular_beam_nu2(h), 4) == nu_ref
+    # a shear beam acts as k_s = 2 k_r / L0^2
+    assert lc.shear_beam_kr(0.4, 1.5) == pytest.approx(0.4 * 1.5 ** 2 / 2.0)
+
+
+def test_unreachable_moduli_are_refused():
+    for springs in (lc.mlp_springs, lc.beam_springs):
+        with pytest.raises(lc.CalibrationError, match=r"nu_2D = 0.4 > 1/3.*at most 1/3"):
+            springs(1.0, 0.4)
+        with pytest.raises(lc.CalibrationError, match=r"nu_2D = -1 must be in \(-1, 1\)"):
+            springs(1.0, -1.0)
+    with pytest.raises(lc.CalibrationError, match=r"E_2D = -2 must be > 0"):
+        lc.beam_springs(-2.0, 0.2)
+    result = subprocess.run([sys.executable, str(TOOL), "mlp", "--E", "1", "--nu", "0.3"],
+                            capture_output=True, text=True)
+    # plane strain: nu_2D = 0.3 / 0.7 > 1/3
+    assert result.returncode == 2
+    assert "nu_2D = 0.428571 > 1/3" in result.stderr
+
+
+def long_wave_moduli(build, directory, coeff):
+    """mu and lambda + 2 mu from D / q^2 of transverse and longitudinal waves
+    of two wavelengths (D/q^2 = M (sqrt3/2) c^2 + O(q^2), extrapolated)."""
+    out = {}
+    for pol in ("L", "T"):
+        values = []
+        for nx in (24, 48):
+            d, q = wave_stiffness(build, directory / f"{pol}{nx}", None, None, "literal", pol,
+                                  nx=nx, coeff=coeff)
+            values.append((d / q ** 2 / (SQRT3 / 2.0), q))
+        (m1, q1), (m2, q2) = values
+        out[pol] = (m2 * q1 ** 2 - m1 * q2 ** 2) / (q1 ** 2 - q2 ** 2)
+    mu, p = out["T"], out["L"]
+    return mu, p - 2.0 * mu
+
+
+@pytest.mark.parametrize("potential,e2,nu2", [("harmonic", 1.0, 0.2), ("morse", 3.0, -0.25)])
+def test_lattice_built_from_the_tool_has_the_moduli(build, tmp_path, potential, e2, nu2):
+    upp, f0 = lc.mlp_pair(e2, nu2)
+    coeff = f"{lc.central_potential(potential, upp, 1.0, 2.0)} {f0:.17g} 6 0.0"
+    result = subprocess.run([sys.executable, str(TOOL), "mlp", "--E2", str(e2), "--nu2", str(nu2),
+                             "--potential", potential, "--D0", "2"], capture_output=True,
+                            text=True, check=True)
+    assert f"pair_coeff * * {lc.central_potential(potential, upp, 1.0, 2.0)}" in result.stdout
+    mu, lam = long_wave_moduli(build, tmp_path, coeff)
+    e2_wave, nu2_wave = lc.young(mu, lam)
+    print(f"{potential}: target E_2D {e2}, nu_2D {nu2}; pair_coeff {coeff}; long waves: "
+          f"E_2D {e2_wave:.8f}, nu_2D {nu2_wave:.8f}")
+    assert e2_wave == pytest.approx(e2, rel=1e-5)
+    assert nu2_wave == pytest.approx(nu2, abs=1e-5)
