@@ -24,6 +24,10 @@ the NUMFRAC/MLP digest (../shared/reference/numfrac_lattice_particles_digest.md)
 * the example examples/mlp_assembly (reference case 20): 256 particles
   from a random start assemble a porous lattice whose bonds follow the
   prescribed axes theta0 (0 and 10 degrees) to within 3 degrees;
+* the example examples/mlp_friction (reference case 22): two bars pressed
+  together and sheared; the contact columns carry more than 4 times the
+  largest return force inside the bars, whose profile is lowest next to
+  the contact and highest in the middle of a bar (the paper's Fig. 6);
 * forces independent of newton_pair and of the number of MPI ranks, and
   the Kokkos variant equal to the CPU style to round-off, per-atom energy
   and virial included.
@@ -474,3 +478,55 @@ def test_assembled_lattice_follows_the_prescribed_axes(build, tmp_path, theta0):
           f"{len(order.bonds(x, y))} bonds")
     assert abs(psi) > 0.25
     assert abs(axis - theta0) < 3.0
+
+
+# --------------------------------------------------------------------------
+# the example: two bars pressed together and sheared (reference case 22)
+
+FRICTION = mcatest.ROOT / "examples" / "mlp_friction"
+
+
+def last_profile(path):
+    """x and <|F_return|> of the last block of a fix ave/chunk file."""
+    blocks = []
+    for line in open(path):
+        words = line.split()
+        if line.startswith("#"):
+            continue
+        if len(words) == 3:
+            blocks.append([])
+        else:
+            blocks[-1].append((float(words[1]), float(words[3])))
+    return np.array(blocks[-1]).T
+
+
+def test_sheared_contact_carries_the_return_forces(build, tmp_path):
+    """The example's scene in full (2 x 20000 steps of 740 particles, 7 s):
+    the paper's Fig. 6 says the contact layer's <|F_return|> is "a few
+    times" the far field, with an elevated zone inside.  Measured in the
+    reference logs: the two contact columns 8.2 times the largest inner
+    column, the inner profile lowest next to the contact and highest in
+    the middle of each bar; pressed only, the contact's return forces are
+    those of a free surface (3.7 times smaller) and the inside is at rest."""
+    if build.name == "kokkos":
+        pytest.skip("LAMMPS 29 Sep 2021 has no fix pair (it came in 2022)")
+    script = (FRICTION / "in.bars").read_text()
+    profiles = {}
+    for name, shear in (("bars", 0.2), ("pressed", 0.0)):
+        build.run(script, tmp_path / name, variables={"name": name, "shear": shear})
+        profiles[name] = last_profile(tmp_path / name / f"{name}.profile.txt")
+    x, fr = profiles["bars"]
+    at_contact = (x > -1.0) & (x < 0.5)
+    inner = ~at_contact & (np.abs(x) < 15.0)
+    contact = fr[at_contact].mean()
+    print(f"sheared: contact {contact:.4g}, inner {fr[inner].min():.3g} to {fr[inner].max():.3g} "
+          f"(largest at x {x[inner][np.argmax(fr[inner])]:.2f}); pressed only: contact "
+          f"{profiles['pressed'][1][at_contact].mean():.4g}, inner at most "
+          f"{profiles['pressed'][1][inner].max():.2g}")
+    assert at_contact.sum() == 2
+    assert contact > 4.0 * fr[inner].max()
+    # lowest next to the contact, the elevated zone in the middle of a bar
+    assert np.abs(x[inner][np.argmin(fr[inner])]) < 2.0
+    assert 5.0 < np.abs(x[inner][np.argmax(fr[inner])]) < 14.0
+    assert contact > 2.0 * profiles["pressed"][1][at_contact].mean()
+    assert profiles["pressed"][1][inner].max() < 1e-4 * contact
