@@ -23,6 +23,7 @@ import os
 import subprocess
 import tempfile
 
+from bitwise import environment
 from run import parse_log
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -37,12 +38,7 @@ def run_once(lmp, ranks, args, outdir):
            "-var", "procs", f"{ranks} 1 1", "-log", log, "-screen", "none"]
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks)] + cmd
-    env = dict(os.environ, OMP_NUM_THREADS="1")
-    if os.geteuid() == 0:
-        env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
-        env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
-    subprocess.run(cmd, cwd=outdir, env=env, check=True)
+    subprocess.run(cmd, cwd=outdir, env=environment(lmp, 1), check=True)
     return parse_log(open(log).read())
 
 

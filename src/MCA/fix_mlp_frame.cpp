@@ -125,10 +125,8 @@ FixMLPFrame::FixMLPFrame(LAMMPS *lmp, int narg, char **arg) :
     sums[3 * b + 2] += m * unwrap[1];
   }
   MPI_Allreduce(sums.data(), all.data(), 3 * nbody, MPI_DOUBLE, MPI_SUM, world);
-  int empty = 0;
-  for (int b = 0; b < nbody; b++)
-    if (!(all[3 * b] > 0.0)) empty = b + 1;
-  if (empty && !by_molecule)
+  // (molecules without mass are bodies that never turn; the group must have one)
+  if (!by_molecule && !(all[0] > 0.0))
     error->all(FLERR, "Fix mlp/frame: group {} has no atoms of positive mass",
                group->names[igroup]);
   for (int i = 0; i < nlocal; i++) {
@@ -238,17 +236,16 @@ void FixMLPFrame::measure()
   // new run) the rate stays; the first measurement or a step back in time
   // (reset_timestep): none
   const bigint now = update->ntimestep;
+  const bool interval = step_measured >= 0 && now > step_measured;
+  const bool no_rate = step_measured < 0 || now < step_measured;
   for (int b = 0; b < nbody; b++) {
-    if (step_measured >= 0 && now > step_measured)
+    if (interval)
       rate[b] = (next[b] - measured[b]) / (double) (now - step_measured);
-    else if (step_measured < 0 || now < step_measured)
+    else if (no_rate)
       rate[b] = 0.0;
     measured[b] = angle[b] = next[b];
   }
-  if (step_measured >= 0 && now > step_measured)
-    rate_known = 1;
-  else if (step_measured < 0 || now < step_measured)
-    rate_known = 0;
+  if (interval || no_rate) rate_known = interval;
   step_measured = now;
 }
 

@@ -31,27 +31,14 @@ import pytest
 
 import mcatest
 from mcatest import read_dump
-from test_pair_mlp import SQRT3, data_file, hex_sites
+from test_pair_mlp import data_file, rotated_patch
 
 F0, N = 0.05, 6
 
 
-def patch(radius=5.2, center=(0.0, 0.0)):
-    sites = hex_sites(16, 10) - np.array([8.0, 5.0 * SQRT3])
-    return sites[np.hypot(sites[:, 0], sites[:, 1]) < radius] + np.array(center)
-
-
-def molecular_data(path, positions, molecules, box):
-    """A 2-D atom_style molecular data file (z = 0)."""
-    lines = ["MLP frame test data", "", f"{len(positions)} atoms", "1 atom types", "",
-             f"{box[0][0]:.17g} {box[0][1]:.17g} xlo xhi",
-             f"{box[1][0]:.17g} {box[1][1]:.17g} ylo yhi", "-0.5 0.5 zlo zhi", "",
-             "Masses", "", "1 1.0", "", "Atoms # molecular", ""]
-    for k, ((x, y), mol) in enumerate(zip(positions, molecules)):
-        lines.append(f"{k + 1} {mol} 1 {x:.17g} {y:.17g} 0.0")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text("\n".join(lines) + "\n")
-    return path
+def patch(center=(0.0, 0.0)):
+    """The hexagonal disc of radius 5.2 of test_pair_mlp, unturned."""
+    return rotated_patch(0.0) + np.array(center)
 
 
 def header(data, style="atomic"):
@@ -114,8 +101,8 @@ def test_bodies_by_molecule(build, tmp_path):
     by 4 and -9 degrees about their centres."""
     left, right = patch(center=(-7.0, 0.0)), patch(center=(7.0, 0.0))
     mols = [1] * len(left) + [2] * len(right)
-    data = molecular_data(tmp_path / "two.data", np.vstack([left, right]), mols,
-                          ((-14, 14), (-8, 8)))
+    data = data_file(tmp_path / "two.data", np.vstack([left, right]), ((-14, 14), (-8, 8)),
+                     molecules=mols)
     script = header(data.name, "molecular") + pair() + (
         "fix fr all mlp/frame 1 body molecule\n"
         "group left molecule 1\ngroup right molecule 2\n"
@@ -137,7 +124,7 @@ def test_pairs_across_bodies_keep_newtons_third_law(build, tmp_path):
     sum to zero although they are not small."""
     sites = patch()
     mols = np.where(sites[:, 0] < 0.0, 1, 2)
-    data = molecular_data(tmp_path / "cut.data", sites, mols, ((-12, 12), (-12, 12)))
+    data = data_file(tmp_path / "cut.data", sites, ((-12, 12), (-12, 12)), molecules=mols)
     c = sites[mols == 2].mean(axis=0)
     script = header(data.name, "molecular") + pair() + (
         "fix fr all mlp/frame 1 body molecule\ngroup right molecule 2\n"
@@ -250,7 +237,7 @@ def test_kokkos_variant_matches_the_cpu_style(tmp_path, style):
     build = mcatest.kokkos_build()
     sites = patch()
     mols = np.where(sites[:, 0] < 0.0, 1, 2)
-    molecular_data(tmp_path / "cut.data", sites, mols, ((-12, 12), (-12, 12)))
+    data_file(tmp_path / "cut.data", sites, ((-12, 12), (-12, 12)), molecules=mols)
     c = sites[mols == 2].mean(axis=0)
     script = header("../cut.data", "molecular") + pair(style) + (
         "fix fr all mlp/frame 1 body molecule\ngroup right molecule 2\n"

@@ -54,17 +54,19 @@ CENTRAL = {
 }
 
 
-def data_file(path, positions, box, ntypes=1, types=None):
-    """A 2-D atom_style atomic data file (z = 0)."""
+def data_file(path, positions, box, ntypes=1, types=None, molecules=None):
+    """A 2-D data file (z = 0): atom_style atomic, or molecular with the
+    molecule ID of each atom."""
     lines = ["MLP test data", "", f"{len(positions)} atoms", f"{ntypes} atom types", "",
              f"{box[0][0]:.17g} {box[0][1]:.17g} xlo xhi",
              f"{box[1][0]:.17g} {box[1][1]:.17g} ylo yhi", "-0.5 0.5 zlo zhi", "",
              "Masses", ""]
     lines += [f"{t + 1} 1.0" for t in range(ntypes)]
-    lines += ["", "Atoms # atomic", ""]
+    lines += ["", "Atoms # atomic" if molecules is None else "Atoms # molecular", ""]
     for k, (x, y) in enumerate(positions):
         t = 1 if types is None else types[k]
-        lines.append(f"{k + 1} {t} {x:.17g} {y:.17g} 0.0")
+        mol = "" if molecules is None else f"{molecules[k]} "
+        lines.append(f"{k + 1} {mol}{t} {x:.17g} {y:.17g} 0.0")
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text("\n".join(lines) + "\n")
     return path
