@@ -255,6 +255,16 @@ void AtomVecMCAKokkos::modified_host()
   atomKK->modified(Host, ALL_MASK);
 }
 
+void AtomVecMCAKokkos::orientation_to_host()
+{
+  atomKK->sync(Host, MCA_QUAT_MASK);
+}
+
+void AtomVecMCAKokkos::orientation_changed_on_host()
+{
+  atomKK->modified(Host, MCA_QUAT_MASK);
+}
+
 /* ----------------------------------------------------------------------
    reaching a device path that init() switched off is an internal error
 ------------------------------------------------------------------------- */

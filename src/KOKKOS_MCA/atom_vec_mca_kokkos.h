@@ -68,6 +68,8 @@ class AtomVecMCAKokkos : public AtomVecMCAStyle<AtomVecKokkos> {
   void modified(ExecutionSpace space, MCAKokkos::mask_t mask) override;
   void sync_host() override;
   void modified_host() override;
+  void orientation_to_host() override;
+  void orientation_changed_on_host() override;
 
 #ifdef MCA_HAVE_KK_AVEC_VIRTUAL
   void sync_pinned(ExecutionSpace space, uint64_t mask, int async_flag = 0) override;

@@ -17,6 +17,8 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
+#include "atom_vec_mca_kokkos.h"
+#include "error.h"
 #include "mca_integration.h"
 
 using namespace LAMMPS_NS;
@@ -40,8 +42,10 @@ template <class DeviceType, bool HALF> struct DampedVerletStep {
   view<decltype(AtomKokkos::k_mass)> mass;
   view<decltype(AtomKokkos::k_type)> type;
   view<decltype(AtomKokkos::k_mask)> mask;
+  MCAKokkos::double_1d<DeviceType> inertia;    // automata (atom_style mca/kk)
+  MCAKokkos::double_2d<DeviceType> quat;
   unsigned value_count;
-  int groupbit, spin, per_atom_mass;
+  int groupbit, spin, per_atom_mass, automata;
   double dtf, dtv, a, a_r, inertia_factor;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type sums) const
@@ -58,7 +62,7 @@ template <class DeviceType, bool HALF> struct DampedVerletStep {
     }
     for (int k = 0; k < 3; k++) v(i, k) = vi[k];
     if (!spin) return;
-    const double j = inertia_factor * m * radius(i) * radius(i);
+    const double j = automata ? inertia(i) : inertia_factor * m * radius(i) * radius(i);
     double wi[3] = {omega(i, 0), omega(i, 1), omega(i, 2)};
     const double ti[3] = {torque(i, 0), torque(i, 1), torque(i, 2)};
     if (HALF)
@@ -66,6 +70,11 @@ template <class DeviceType, bool HALF> struct DampedVerletStep {
     else
       sums[1] += j * MCAKernels::damped_full_step(wi, ti, dtf / j, a_r);
     for (int k = 0; k < 3; k++) omega(i, k) = wi[k];
+    if (HALF && automata) {
+      double qi[4] = {quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3)};
+      MCAKernels::rotate_quaternion(qi, wi, dtv);
+      for (int k = 0; k < 4; k++) quat(i, k) = qi[k];
+    }
   }
 };
 }    // namespace
@@ -105,6 +114,11 @@ void FixNVEDampedKokkos<DeviceType>::integrate(double &mvsq, double &jwsq)
   MCAKokkos::mask_t read = X_MASK | V_MASK | F_MASK | MASK_MASK | TYPE_MASK;
   read |= atom->rmass ? RMASS_MASK : EMPTY_MASK;
   if (spin) read |= OMEGA_MASK | TORQUE_MASK | RADIUS_MASK;
+  auto *avecKK = automata ? dynamic_cast<AtomVecMCAKokkos *>(atom->avec) : nullptr;
+  if (automata && !avecKK)
+    error->all(FLERR, "Fix nve/damped/kk with automata requires atom_style mca/kk, not {}",
+               atom->atom_style);
+  if (avecKK) read |= MCA_GEOMETRY_MASK | MCA_QUAT_MASK;
   atomKK->sync(execution_space, read);
 
   DampedVerletStep<DeviceType, HALF> step;
@@ -115,6 +129,11 @@ void FixNVEDampedKokkos<DeviceType>::integrate(double &mvsq, double &jwsq)
     step.omega = atomKK->k_omega.template view<DeviceType>();
     step.torque = atomKK->k_torque.template view<DeviceType>();
     step.radius = atomKK->k_radius.template view<DeviceType>();
+  }
+  step.automata = avecKK ? 1 : 0;
+  if (avecKK) {
+    step.inertia = avecKK->k_inertia.template view<DeviceType>();
+    step.quat = avecKK->k_quat.template view<DeviceType>();
   }
   step.per_atom_mass = atom->rmass ? 1 : 0;
   if (atom->rmass)
@@ -143,6 +162,7 @@ void FixNVEDampedKokkos<DeviceType>::integrate(double &mvsq, double &jwsq)
 
   MCAKokkos::mask_t modified = V_MASK | (HALF ? X_MASK : EMPTY_MASK);
   if (spin) modified |= OMEGA_MASK;
+  if (avecKK && HALF) modified |= MCA_QUAT_MASK;
   atomKK->modified(execution_space, modified);
 }
 

@@ -21,6 +21,8 @@
 #include "atom_vec_mca_impl.h"
 
 #include "atom.h"
+#include "error.h"
+#include "group.h"
 
 using namespace LAMMPS_NS;
 
@@ -42,6 +44,21 @@ MCAAtomFields *MCAAtomFields::find(Atom *atom)
   auto fields = dynamic_cast<MCAAtomFields *>(atom->avec);
   if (!fields) fields = dynamic_cast<MCAAtomFields *>(atom->style_match("mca"));
   return fields;
+}
+
+void MCAAtomFields::require_mass_and_inertia(LAMMPS *lmp, int igroup, const char *style)
+{
+  const int groupbit = lmp->group->bitmask[igroup];
+  const int *mask = lmp->atom->mask;
+  int flag = 0, flagall;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if ((mask[i] & groupbit) && (lmp->atom->rmass[i] <= 0.0 || inertia[i] <= 0.0)) flag = 1;
+  MPI_Allreduce(&flag, &flagall, 1, MPI_INT, MPI_MAX, lmp->world);
+  if (flagall)
+    lmp->error->all(FLERR,
+                    "{} requires every automaton in group {} to have a positive mass and "
+                    "moment of inertia",
+                    style, lmp->group->names[igroup]);
 }
 
 namespace LAMMPS_NS {

@@ -63,9 +63,16 @@ class MCAAtomFields {
   // the host copy of all per-atom data is current / was changed on the host
   virtual void sync_host() {}
   virtual void modified_host() {}
+  // the same for the orientations (quat) alone
+  virtual void orientation_to_host() {}
+  virtual void orientation_changed_on_host() {}
 
   // the MCA atom style of this system (also inside atom_style hybrid), or nullptr
   static MCAAtomFields *find(class Atom *atom);
+
+  // an integrator's check: every automaton of the group has a positive
+  // mass and moment of inertia (an error naming the style and the group)
+  void require_mass_and_inertia(class LAMMPS *lmp, int igroup, const char *style);
 
  protected:
   MCAAtomFields();

@@ -147,12 +147,7 @@ template <class AtomVecBase> void AtomVecMCAStyle<AtomVecBase>::process_args(int
 template <class AtomVecBase> void AtomVecMCAStyle<AtomVecBase>::init()
 {
   AtomVecBase::init();
-
-  if (domain->dimension != 3)
-    error->all(FLERR,
-               "Atom style mca requires a 3d simulation (dimension 3), "
-               "found dimension {}",
-               domain->dimension);
+  // 2-D systems turn about z (bond_style beam); pair mca requires 3-D itself
 }
 
 /* ----------------------------------------------------------------------

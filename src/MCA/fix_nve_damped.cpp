@@ -21,6 +21,7 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "group.h"
 #include "mca_compat.h"
 #include "update.h"
 
@@ -37,7 +38,8 @@ using namespace FixConst;
 ------------------------------------------------------------------------- */
 
 FixNVEDamped::FixNVEDamped(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), gamma(0.0), gamma_r(0.0), inertia_factor(0.4), spin(0), dtv(0.0), dtf(0.0)
+    Fix(lmp, narg, arg), gamma(0.0), gamma_r(0.0), inertia_factor(0.4), spin(0), automata(nullptr),
+    dtv(0.0), dtf(0.0)
 {
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix nve/damped (needs gamma)", error);
   gamma = damping_rate(lmp, "nve/damped", "gamma", arg[3]);
@@ -73,10 +75,15 @@ FixNVEDamped::FixNVEDamped(LAMMPS *lmp, int narg, char **arg) :
   if (disc && domain->dimension != 2)
     error->all(FLERR, "Fix nve/damped disc requires dimension 2 (a disc's J = m r^2 / 2)");
   if (disc) inertia_factor = 0.5;
-  if (MCAAtomFields::find(atom))
+  // automata (atom_style mca, e.g. the particles of bond_style beam): their
+  // moments of inertia, and the orientation turned with the spin
+  automata = MCAAtomFields::find(atom);
+  if (automata && disc)
     error->all(FLERR,
-               "Fix nve/damped does not integrate automata (orientation quaternions): use fix "
-               "nve/mca with fix mca/damping");
+               "Fix nve/damped disc: automata (atom_style mca) have their own moments of "
+               "inertia (mca_set inertia)");
+  if (automata && !spin)
+    error->all(FLERR, "Fix nve/damped spin no: automata (atom_style mca) always spin");
 
   time_integrate = 1;
   scalar_flag = 1;
@@ -99,6 +106,12 @@ void FixNVEDamped::init()
 {
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix nve/damped does not support run_style respa");
+  // the style may have been replaced since the fix was defined
+  automata = MCAAtomFields::find(atom);
+  if (automata) {
+    automata->sync_host();
+    automata->require_mass_and_inertia(lmp, igroup, "Fix nve/damped");
+  }
   reset_dt();
 }
 
@@ -150,8 +163,10 @@ void FixNVEDamped::half_step(double &mvsq, double &jwsq)
     x[i][1] += dtv * v[i][1];
     x[i][2] += dtv * v[i][2];
     if (spin) {
-      const double j = inertia_factor * m * atom->radius[i] * atom->radius[i];
+      const double j = automata ? automata->inertia[i]
+                                : inertia_factor * m * atom->radius[i] * atom->radius[i];
       jwsq += j * MCAKernels::damped_half_step(atom->omega[i], atom->torque[i], dtf / j, a_r);
+      if (automata) MCAKernels::rotate_quaternion(automata->quat[i], atom->omega[i], dtv);
     }
   }
 }
@@ -167,7 +182,8 @@ void FixNVEDamped::full_step(double &mvsq, double &jwsq)
     const double m = rmass ? rmass[i] : mass[type[i]];
     mvsq += m * MCAKernels::damped_full_step(v[i], f[i], dtf / m, a);
     if (spin) {
-      const double j = inertia_factor * m * atom->radius[i] * atom->radius[i];
+      const double j = automata ? automata->inertia[i]
+                                : inertia_factor * m * atom->radius[i] * atom->radius[i];
       jwsq += j * MCAKernels::damped_full_step(atom->omega[i], atom->torque[i], dtf / j, a_r);
     }
   }

@@ -30,7 +30,9 @@ namespace LAMMPS_NS {
    doc/src/fix_nve_damped.rst): velocity Verlet with the mass-proportional
    damping force -gamma m v(n) at the centred velocity, stable for
    omega dt < 2 at any damping; the spin of finite-size spheres likewise
-   (-gamma_r J omega).  The energy it takes out is its scalar (ecouple).
+   (-gamma_r J omega), and that of automata (atom_style mca: their own J,
+   the orientation turned as fix nve/mca does).  The energy it takes out
+   is its scalar (ecouple).
 ------------------------------------------------------------------------- */
 
 class FixNVEDamped : public Fix {
@@ -46,9 +48,10 @@ class FixNVEDamped : public Fix {
   void restart(char *) override;
 
  protected:
-  double gamma, gamma_r;    // damping rates of translation and spin (1/time)
-  double inertia_factor;    // J = inertia_factor m r^2 (0.4 sphere, 0.5 disc)
-  int spin;                 // integrate the spin of finite-size spheres
+  double gamma, gamma_r;            // damping rates of translation and spin (1/time)
+  double inertia_factor;            // J = inertia_factor m r^2 (0.4 sphere, 0.5 disc)
+  int spin;                         // integrate the spin of finite-size spheres
+  class MCAAtomFields *automata;    // atom_style mca: its J and orientations
   double dtv, dtf;
   MCAEnergyTally dissipated;    // energy taken out so far
 

@@ -17,9 +17,7 @@
 
 #include "atom.h"
 #include "atom_vec_mca.h"
-#include "domain.h"
 #include "error.h"
-#include "group.h"
 #include "mca_integration.h"
 
 using namespace LAMMPS_NS;
@@ -39,8 +37,6 @@ FixNVEMCA::FixNVEMCA(LAMMPS *lmp, int narg, char **arg) : FixNVE(lmp, narg, arg)
   avec = MCAAtomFields::find(atom);
   if (!avec)
     error->all(FLERR, "Fix nve/mca requires atom_style mca, not atom_style {}", atom->atom_style);
-  if (domain->dimension != 3)
-    error->all(FLERR, "Fix nve/mca requires a 3d simulation (dimension 3)");
 
   time_integrate = 1;
 }
@@ -55,18 +51,7 @@ void FixNVEMCA::init()
   avec = MCAAtomFields::find(atom);
   if (!avec) error->all(FLERR, "Fix nve/mca requires atom_style mca");
 
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  int flag = 0;
-  for (int i = 0; i < nlocal; i++)
-    if ((mask[i] & groupbit) && (atom->rmass[i] <= 0.0 || avec->inertia[i] <= 0.0)) flag = 1;
-  int flagall;
-  MPI_Allreduce(&flag, &flagall, 1, MPI_INT, MPI_MAX, world);
-  if (flagall)
-    error->all(FLERR,
-               "Fix nve/mca requires every automaton in group {} to have a positive "
-               "mass and moment of inertia",
-               group->names[igroup]);
+  avec->require_mass_and_inertia(lmp, igroup, "Fix nve/mca");
 }
 
 /* ----------------------------------------------------------------------

@@ -22,6 +22,7 @@
 #include "error.h"
 #include "group.h"
 #include "input.h"
+#include "math_const.h"
 #include "mca_compat.h"
 #include "mca_kernels.h"
 #include "memory.h"
@@ -52,14 +53,28 @@ struct ScalarKeyword {
   bool lo_inclusive;
 };
 
-enum { RADIUS, DIAMETER, DENSITY, MASS, VOLUME, INERTIA, SMEAN, SEQ, EEQ, EPSP, DAMAGE, NSCALAR };
+enum {
+  RADIUS,
+  DIAMETER,
+  DENSITY,
+  MASS,
+  VOLUME,
+  INERTIA,
+  SMEAN,
+  SEQ,
+  EEQ,
+  EPSP,
+  DAMAGE,
+  ANGLE,
+  NSCALAR
+};
 
 constexpr double BIG = 1.0e300;
 const ScalarKeyword scalar_keywords[NSCALAR] = {
     {"radius", 0.0, BIG, false}, {"diameter", 0.0, BIG, false}, {"density", 0.0, BIG, false},
     {"mass", 0.0, BIG, false},   {"volume", 0.0, BIG, false},   {"inertia", 0.0, BIG, false},
     {"smean", -BIG, BIG, true},  {"seq", 0.0, BIG, true},       {"eeq", 0.0, BIG, true},
-    {"epsp", 0.0, BIG, true},    {"damage", 0.0, 1.0, true}};
+    {"epsp", 0.0, BIG, true},    {"damage", 0.0, 1.0, true},    {"angle", -BIG, BIG, true}};
 
 std::string range_text(const ScalarKeyword &k)
 {
@@ -158,7 +173,7 @@ void MCASet::command(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Unknown mca_set keyword {} (allowed: packing radius diameter density "
-                 "mass volume inertia smean stress seq eeq epsp damage)",
+                 "mass volume inertia smean stress seq eeq epsp damage angle)",
                  keyword);
     }
   }
@@ -272,6 +287,13 @@ void MCASet::command(int narg, char **arg)
     if (values[EEQ].given) avec->eeq[i] = values[EEQ].at(i);
     if (values[EPSP].given) avec->epsp[i] = values[EPSP].at(i);
     if (values[DAMAGE].given) avec->damage[i] = values[DAMAGE].at(i);
+    // orientation: a turn about z by the angle (degrees; 2-D particles)
+    if (values[ANGLE].given) {
+      const double half = 0.5 * values[ANGLE].at(i) * MathConst::MY_PI / 180.0;
+      avec->quat[i][0] = cos(half);
+      avec->quat[i][1] = avec->quat[i][2] = 0.0;
+      avec->quat[i][3] = sin(half);
+    }
     if (stress_given)
       for (int m = 0; m < MCAAtomFields::NSTRESS; m++) avec->stress[i][m] = new_stress[m];
     count++;

@@ -99,9 +99,8 @@ read_data       bad.data
 # (case id, input, regular expression the error message must match)
 CASES = [
     ("atom_style args", "atom_style mca 1\n", r"atom_style mca takes no arguments"),
-    ("2d run", TWO_D + "pair_style zero 1.0\npair_coeff * *\nrun 0\n",
-     r"Atom style mca requires a 3d simulation \(dimension 3\), found dimension 2"),
-    ("2d fix", TWO_D + "fix 1 all nve/mca\n", r"Fix nve/mca requires a 3d simulation"),
+    # atom_style mca and fix nve/mca are 2-D too (bond_style beam); MCA is 3-D
+    ("2d run", TWO_D + PAIR + "run 0\n", r"Pair style mca requires a 3d simulation"),
     ("fix wrong atom style", SPHERE_BOX + "fix 1 all nve/mca\n",
      r"Fix nve/mca requires atom_style mca, not atom_style sphere"),
     ("fix extra keyword", BOX + "fix 1 all nve/mca update dipole\n",
@@ -259,8 +258,8 @@ CASES = [
         "pair_coeff      1 1 harmonic 2 1 0.05 6 0\nrun             0\n",
         "fix 1 all nve/damped 1 disc\n"),
      r"Fix nve/damped disc requires dimension 2"),
-    ("damped automata", BOX + "fix 1 all nve/damped 1\n",
-     r"Fix nve/damped does not integrate automata .*fix nve/mca"),
+    ("damped automata", BOX + "fix 1 all nve/damped 1 spin no\n",
+     r"Fix nve/damped spin no: automata \(atom_style mca\) always spin"),
     ("damped respa", MLP_BOX + "pair_style mlp 1.3\npair_coeff * * harmonic 2 1 0.05 6 0\n"
      "fix 1 all nve/damped 1\nrun_style respa 2 2\nrun 1\n",
      r"Fix nve/damped does not support run_style respa"),

@@ -25,7 +25,7 @@ EXAMPLES = mcatest.ROOT / "examples"
 COLUMNS = ("id type x y z vx vy vz radius c_vis[1] c_vis[2] c_vis[3] c_vis[4] c_vis[5] "
            "c_vis[6] c_vis[7]")
 MCA_INPUTS = sorted(p for p in EXAMPLES.glob("*/in.*")
-                    if not p.parent.name.startswith(("gp_", "mlp_", "numfrac_", "batch", "python"))
+                    if not p.parent.name.startswith(("gp_", "mlp_", "numfrac_", "beam_", "batch", "python"))
                     and p.parent.name != "rolling")
 
 

@@ -1,0 +1,232 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "bond_beam_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "atom_vec_mca_kokkos.h"
+#include "error.h"
+#include "fix_beam_state.h"
+#include "force.h"
+#include "memory_kokkos.h"
+#include "neighbor_kokkos.h"
+
+using namespace LAMMPS_NS;
+using namespace BeamKernels;
+
+namespace {
+
+template <class View>
+using atomic_view = Kokkos::View<typename View::data_type, typename View::array_layout,
+                                 typename View::device_type, Kokkos::MemoryTraits<Kokkos::Atomic>>;
+
+// the force kernel: one bond per call (BondBeam::compute)
+template <class DeviceType> struct BeamForceKernel {
+  template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
+  view<decltype(AtomKokkos::k_x)> x;
+  atomic_view<view<decltype(AtomKokkos::k_f)>> f;
+  atomic_view<view<decltype(AtomKokkos::k_torque)>> torque;
+  MCAKokkos::double_2d<DeviceType> quat, records;
+  view<decltype(NeighborKokkos::k_bondlist)> bondlist;
+  Kokkos::View<BeamCoeff *, DeviceType> coeff;
+  atomic_view<MCAKokkos::double_1d<DeviceType>> eatom;
+  atomic_view<MCAKokkos::double_2d<DeviceType>> vatom;
+  MCAKokkos::int_2d<DeviceType> broken;    // entries (i1, i2) broken this step
+  Kokkos::View<int, DeviceType> nbroken;
+  int nlocal, newton_bond;
+  int eflag_global, eflag_atom, vflag_global, vflag_atom;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int n, EV_FLOAT &ev) const
+  {
+    const int type = bondlist(n, 2);
+    if (type <= 0) return;
+    const bool swap = records(n, BondBeam::REC_SWAP) != 0.0;
+    const int i = swap ? bondlist(n, 1) : bondlist(n, 0);
+    const int j = swap ? bondlist(n, 0) : bondlist(n, 1);
+    const double ref[NREF] = {records(n, REF_L0), records(n, REF_BI), records(n, REF_BJ)};
+    const BeamCoeff &c = coeff(type);
+    const double dx = x(j, 0) - x(i, 0), dy = x(j, 1) - x(i, 1);
+    const BeamForce out = beam_force_2d(c, ref, dx, dy, planar_angle(quat(i, 0), quat(i, 3)),
+                                        planar_angle(quat(j, 0), quat(j, 3)));
+    if (c.breakable && break_measure(c, out, records(n, BondBeam::REC_STRENGTH)) >= 1.0) {
+      bondlist(n, 2) = 0;
+      const int k = Kokkos::atomic_fetch_add(&nbroken(), 1);
+      if (k < (int) broken.extent(0)) {
+        broken(k, 0) = bondlist(n, 0);
+        broken(k, 1) = bondlist(n, 1);
+      }
+      return;
+    }
+    const bool own_i = newton_bond || i < nlocal, own_j = newton_bond || j < nlocal;
+    if (own_i) {
+      f(i, 0) -= out.fx;
+      f(i, 1) -= out.fy;
+      torque(i, 2) += out.ti;
+    }
+    if (own_j) {
+      f(j, 0) += out.fx;
+      f(j, 1) += out.fy;
+      torque(j, 2) += out.tj;
+    }
+    // BondBeam::tally
+    const double share = newton_bond ? 1.0 : 0.5 * ((i < nlocal) + (j < nlocal));
+    if (eflag_global) ev.evdwl += share * out.energy;
+    if (eflag_atom) {
+      if (own_i) eatom(i) += 0.5 * out.energy;
+      if (own_j) eatom(j) += 0.5 * out.energy;
+    }
+    if (vflag_global || vflag_atom) {
+      const double v[6] = {dx * out.fx, dy * out.fy, 0.0, dx * out.fy, 0.0, 0.0};
+      if (vflag_global)
+        for (int k = 0; k < 6; k++) ev.v[k] += share * v[k];
+      if (vflag_atom)
+        for (int k = 0; k < 6; k++) {
+          if (own_i) vatom(i, k) += 0.5 * v[k];
+          if (own_j) vatom(j, k) += 0.5 * v[k];
+        }
+    }
+  }
+};
+
+// Bond::kokkosable (since 2023: Verlet syncs for a bond style without it)
+template <class Style>
+auto mark_kokkosable(Style *style, int) -> decltype(style->kokkosable = 1, void())
+{
+  style->kokkosable = 1;
+}
+template <class Style> void mark_kokkosable(Style *, long) {}
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType>
+BondBeamKokkos<DeviceType>::BondBeamKokkos(LAMMPS *lmp) :
+    MCAKokkos::RequiresKokkos(lmp, "Bond style beam/kk"), BondBeam(lmp), avecKK(nullptr),
+    d_nbroken("bond:beam_nbroken")
+{
+  mark_kokkosable(this, 0);
+  atomKK = (AtomKokkos *) atom;
+  execution_space = MCAKokkos::space_of<DeviceType>();
+  datamask_read = X_MASK | F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
+  datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
+}
+
+template <class DeviceType> BondBeamKokkos<DeviceType>::~BondBeamKokkos()
+{
+  if (copymode) return;
+  // the base destructor then finds null pointers
+  tally.destroy(memoryKK, eatom, vatom);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void BondBeamKokkos<DeviceType>::init_style()
+{
+  BondBeam::init_style();
+  avecKK = dynamic_cast<AtomVecMCAKokkos *>(atom->avec);
+  if (!avecKK)
+    error->all(FLERR, "Bond style beam/kk requires atom_style mca/kk, not atom_style {}",
+               atom->atom_style);
+  d_coeff = MCAKokkos::copy_to_device<DeviceType>(coeffs, atom->nbondtypes + 1, "bond:beam_coeff");
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag, 0);
+  tally.make(memoryKK, eatom, vatom, eflag_atom, vflag_atom, maxeatom, maxvatom);
+
+  auto *neighborKK = static_cast<NeighborKokkos *>(neighbor);
+  const int nlist = neighbor->nbondlist;
+
+  // the records of the listed bonds, made on the host (the fix keeps the
+  // reference states there) after each build of the list
+  if (references_stale(nlist)) {
+    atomKK->sync(Host, X_MASK | TAG_MASK | BOND_MASK | MCA_QUAT_MASK);
+    neighborKK->k_bondlist.sync_host();
+    auto list = neighborKK->k_bondlist.view_host();
+    if ((int) k_records.extent(0) < nlist)
+      k_records = MCAKokkos::dual_double_2d("bond:beam_records", nlist + nlist / 4 + 16, NREC);
+    fill_records(nlist, list.data(), (long) list.stride(0), (long) list.stride(1),
+                 k_records.view_host().data());
+    k_records.modify_host();
+    k_records.template sync<DeviceType>();
+  }
+
+  atomKK->sync(execution_space, datamask_read | MCA_QUAT_MASK);
+  atomKK->modified(execution_space, datamask_modify);
+
+  BeamForceKernel<DeviceType> kernel;
+  kernel.x = atomKK->k_x.template view<DeviceType>();
+  kernel.f = atomKK->k_f.template view<DeviceType>();
+  kernel.torque = atomKK->k_torque.template view<DeviceType>();
+  kernel.quat = avecKK->k_quat.template view<DeviceType>();
+  kernel.records = k_records.template view<DeviceType>();
+  kernel.bondlist = neighborKK->k_bondlist.template view<DeviceType>();
+  kernel.coeff = d_coeff;
+  if (breaking) {
+    if ((int) d_broken.extent(0) < nlist)
+      d_broken = MCAKokkos::int_2d<DeviceType>("bond:beam_broken", nlist, 2);
+    Kokkos::deep_copy(d_nbroken, 0);
+    kernel.broken = d_broken;
+    kernel.nbroken = d_nbroken;
+  }
+  if (eflag_atom) {
+    kernel.eatom = tally.k_eatom.template view<DeviceType>();
+    Kokkos::deep_copy(tally.k_eatom.template view<DeviceType>(), 0.0);
+  }
+  if (vflag_atom) {
+    kernel.vatom = tally.k_vatom.template view<DeviceType>();
+    Kokkos::deep_copy(tally.k_vatom.template view<DeviceType>(), 0.0);
+  }
+  kernel.nlocal = atom->nlocal;
+  kernel.newton_bond = force->newton_bond;
+  kernel.eflag_global = eflag_global;
+  kernel.eflag_atom = eflag_atom;
+  kernel.vflag_global = vflag_global;
+  kernel.vflag_atom = vflag_atom;
+
+  EV_FLOAT ev;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlist), kernel, ev);
+
+  if (eflag_global) energy += ev.evdwl;
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += ev.v[k];
+  tally.to_host<DeviceType>(eflag_atom, vflag_atom);
+
+  // broken bonds leave the bond arrays on the host (the device list keeps
+  // them as type 0 until it is built again)
+  if (breaking) {
+    int nbroken = 0;
+    Kokkos::deep_copy(nbroken, d_nbroken);
+    auto pairs = Kokkos::create_mirror_view(d_broken);
+    if (nbroken) {
+      Kokkos::deep_copy(pairs, d_broken);
+      atomKK->sync(Host, TAG_MASK | BOND_MASK);
+    }
+    remove_broken(nbroken, nbroken ? pairs.data() : nullptr);
+    if (nbroken) atomKK->modified(Host, BOND_MASK);
+  }
+}
+
+namespace LAMMPS_NS {
+template class BondBeamKokkos<LMPDeviceType>;
+#ifdef LMP_KOKKOS_GPU
+template class BondBeamKokkos<LMPHostType>;
+#endif
+}    // namespace LAMMPS_NS

@@ -1,0 +1,451 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "bond_beam.h"
+
+#include "atom.h"
+#include "atom_vec_mca.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_beam_state.h"
+#include "force.h"
+#include "math_const.h"
+#include "mca_compat.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "pair.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+using namespace BeamKernels;
+
+static const char FIX_ID[] = "BEAM_STATE";
+
+/* ---------------------------------------------------------------------- */
+
+BondBeam::BondBeam(LAMMPS *_lmp) :
+    Bond(_lmp), coeffs(nullptr), fix_state(nullptr), L0_max(0.0), built_at(-1), built_n(0),
+    breaking(0), records(nullptr), maxrecords(0)
+{
+}
+
+BondBeam::~BondBeam()
+{
+  if (copymode) return;
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->sfree(coeffs);
+  }
+  // the fix stays: a bond_style beam defined again keeps the reference states
+  memory->destroy(records);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondBeam::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->nbondtypes + 1;
+  memory->create(setflag, np1, "bond:setflag");
+  for (int i = 1; i < np1; i++) setflag[i] = 0;
+  coeffs = static_cast<BeamCoeff *>(memory->smalloc(np1 * sizeof(BeamCoeff), "bond:coeffs"));
+  memset(coeffs, 0, np1 * sizeof(BeamCoeff));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondBeam::settings(int narg, char **arg)
+{
+  if (narg > 0)
+    error->all(FLERR, "Illegal bond_style beam command: unexpected argument '{}' (no settings)",
+               arg[0]);
+}
+
+/* ----------------------------------------------------------------------
+   bond_coeff N E A I [shear G ks] [break sigma0 tau0] [bending c]
+                      [mohr phi] [scatter uniform w seed | weibull m seed]
+------------------------------------------------------------------------- */
+
+void BondBeam::coeff(int narg, char **arg)
+{
+  if (narg < 4) utils::missing_cmd_args(FLERR, "bond_coeff beam (N E A I)", error);
+  if (!allocated) allocate();
+
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
+
+  BeamCoeff c;
+  memset(&c, 0, sizeof(c));
+  auto positive = [&](const char *what, const char *word) {
+    const double value = utils::numeric(FLERR, word, false, lmp);
+    if (value <= 0.0) error->all(FLERR, "Bond_coeff beam: {} = {} must be > 0", what, value);
+    return value;
+  };
+  c.E = positive("E", arg[1]);
+  c.A = positive("A", arg[2]);
+  c.I = positive("I", arg[3]);
+  bool bending = false, mohr = false;
+  int iarg = 4;
+  while (iarg < narg) {
+    const std::string word = arg[iarg];
+    auto need = [&](int n, const char *what) {
+      if (iarg + n + 1 > narg)
+        utils::missing_cmd_args(FLERR, std::string("bond_coeff beam ") + what, error);
+    };
+    if (word == "shear") {
+      need(2, "shear (G ks)");
+      c.G = positive("shear G", arg[iarg + 1]);
+      c.ks = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (c.ks <= 0.0 || c.ks > 1.0)
+        error->all(FLERR, "Bond_coeff beam: shear ks = {} must be in (0, 1]", c.ks);
+      iarg += 3;
+    } else if (word == "break") {
+      need(2, "break (sigma0 tau0)");
+      c.breakable = 1;
+      c.sigma0 = positive("break sigma0", arg[iarg + 1]);
+      c.tau0 = positive("break tau0", arg[iarg + 2]);
+      iarg += 3;
+    } else if (word == "bending") {
+      need(1, "bending (fibre distance)");
+      c.fibre = positive("bending (fibre distance)", arg[iarg + 1]);
+      bending = true;
+      iarg += 2;
+    } else if (word == "mohr") {
+      need(1, "mohr (friction angle)");
+      const double phi = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (phi < 0.0 || phi >= 90.0)
+        error->all(FLERR, "Bond_coeff beam: mohr friction angle = {} must be in [0, 90) degrees",
+                   phi);
+      c.mohr = 1;
+      c.tan_phi = tan(phi * MathConst::MY_PI / 180.0);
+      mohr = true;
+      iarg += 2;
+    } else if (word == "scatter") {
+      need(3, "scatter (uniform w seed | weibull m seed)");
+      const std::string kind = arg[iarg + 1];
+      const double value = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (kind == "uniform") {
+        if (value < 0.0 || value >= 1.0)
+          error->all(FLERR, "Bond_coeff beam: scatter uniform width = {} must be in [0, 1)", value);
+        c.scatter = SCATTER_UNIFORM;
+      } else if (kind == "weibull") {
+        if (value <= 0.0)
+          error->all(FLERR, "Bond_coeff beam: scatter weibull modulus = {} must be > 0", value);
+        c.scatter = SCATTER_WEIBULL;
+      } else
+        error->all(FLERR, "Bond_coeff beam: scatter {} is unknown (allowed: uniform, weibull)",
+                   kind);
+      c.scatter_width = value;
+      c.seed = utils::inumeric(FLERR, arg[iarg + 3], false, lmp);
+      if (c.seed <= 0) error->all(FLERR, "Bond_coeff beam: scatter seed = {} must be > 0", c.seed);
+      iarg += 4;
+    } else
+      error->all(FLERR,
+                 "Bond_coeff beam: unknown keyword '{}' (allowed: shear, break, bending, mohr, "
+                 "scatter)",
+                 word);
+  }
+  if (!c.breakable && (bending || mohr || c.scatter))
+    error->all(FLERR, "Bond_coeff beam: bending, mohr and scatter need the break keyword");
+  set_coeff(c);
+
+  for (int i = ilo; i <= ihi; i++) {
+    coeffs[i] = c;
+    setflag[i] = 1;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondBeam::init_style()
+{
+  if (!MCAAtomFields::find(atom))
+    error->all(FLERR,
+               "Bond style beam requires atom_style mca (its quaternions are the "
+               "particles' orientations), not atom_style {}",
+               atom->atom_style);
+  if (domain->dimension != 2)
+    error->all(FLERR,
+               "Bond style beam requires dimension 2 (the 3-D frame element is not "
+               "implemented yet)");
+
+  fix_state = dynamic_cast<FixBeamState *>(MCACompat::fix_by_id(modify, FIX_ID));
+  if (!fix_state) {
+    // made during the run's init, before Modify's, which initialises it
+    modify->add_fix(fmt::format("{} all BEAM_STATE", FIX_ID), 0);
+    fix_state = dynamic_cast<FixBeamState *>(MCACompat::fix_by_id(modify, FIX_ID));
+  }
+  built_at = -1;
+
+  breaking = 0;
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (coeffs[i].breakable) breaking = 1;
+  // a broken bond leaves the bond arrays but not the special lists: the
+  // pair style must treat bonded pairs as any other (BPM's overlay/pair yes)
+  if (breaking && force->pair && (force->special_lj[1] != 1.0 || force->special_coul[1] != 1.0))
+    error->all(FLERR,
+               "Bond style beam with break requires special_bonds lj/coul 1.0 for 1-2 pairs "
+               "when a pair style is defined (bonded particles interact through the pair style "
+               "too, and go on doing so when the bond breaks); found lj {} coul {}",
+               force->special_lj[1], force->special_coul[1]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+bool BondBeam::references_stale(int nlist) const
+{
+  if (built_at != neighbor->ncalls) return true;
+  if (nlist != built_n)
+    error->one(FLERR,
+               "Bond style beam: the bond list changed without a neighbor list build "
+               "(no fix that makes or deletes bonds during a run is supported)");
+  return false;
+}
+
+void BondBeam::fill_records(int nlist, const int *list, long row_stride, long column_stride,
+                            double *out)
+{
+  const int newton = force->newton_bond;
+  const tagint *tag = atom->tag;
+  int missing = 0, zero = 0;
+  double lmax = 0.0;
+  for (int n = 0; n < nlist; n++) {
+    const int i1 = list[n * row_stride], i2 = list[n * row_stride + column_stride];
+    const int type = list[n * row_stride + 2 * column_stride];
+    double *rec = out + n * NREC;
+    const double *ref = fix_state->reference(i1, i2, newton);
+    if (!ref) {
+      missing = 1;
+      continue;
+    }
+    for (int k = 0; k < NREF; k++) rec[k] = ref[k];
+    const bool swap = tag[i1] > tag[i2];
+    rec[REC_SWAP] = swap ? 1.0 : 0.0;
+    rec[REC_STRENGTH] = (type > 0)
+        ? strength_factor(coeffs[type], swap ? tag[i2] : tag[i1], swap ? tag[i1] : tag[i2])
+        : 1.0;
+    if (ref[REF_L0] <= 0.0) zero = 1;
+    if (ref[REF_L0] > lmax) lmax = ref[REF_L0];
+  }
+  int flags[2] = {missing, zero}, flagsall[2];
+  MPI_Allreduce(flags, flagsall, 2, MPI_INT, MPI_MAX, world);
+  if (flagsall[0]) error->all(FLERR, "Bond style beam: a listed bond is not stored by its atom");
+  if (flagsall[1])
+    error->all(FLERR, "Bond style beam: a bond of zero length (two particles at one place)");
+  MPI_Allreduce(&lmax, &L0_max, 1, MPI_DOUBLE, MPI_MAX, world);
+  built_at = neighbor->ncalls;
+  built_n = nlist;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondBeam::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  const int nlist = neighbor->nbondlist;
+  int **bondlist = neighbor->bondlist;
+  if (references_stale(nlist)) {
+    if (nlist > maxrecords) {
+      maxrecords = nlist + nlist / 4 + 16;
+      memory->destroy(records);
+      memory->create(records, maxrecords * NREC, "bond:records");
+    }
+    fill_records(nlist, nlist ? bondlist[0] : nullptr, 3, 1, records);
+  }
+
+  double **x = atom->x;
+  double **f = atom->f;
+  double **torque = atom->torque;
+  double **quat = fix_state->avec->quat;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  std::vector<int> broken;
+
+  for (int n = 0; n < nlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;
+    const double *rec = &records[n * NREC];
+    // the element in the order lower atom ID first (BeamKernels::BeamForce)
+    const bool swap = rec[REC_SWAP] != 0.0;
+    const int i = swap ? bondlist[n][1] : bondlist[n][0];
+    const int j = swap ? bondlist[n][0] : bondlist[n][1];
+    const BeamCoeff &c = coeffs[type];
+    const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1];
+    const BeamForce out = beam_force_2d(c, rec, dx, dy, planar_angle(quat[i][0], quat[i][3]),
+                                        planar_angle(quat[j][0], quat[j][3]));
+    if (c.breakable && break_measure(c, out, rec[REC_STRENGTH]) >= 1.0) {
+      bondlist[n][2] = 0;
+      broken.push_back(bondlist[n][0]);
+      broken.push_back(bondlist[n][1]);
+      continue;
+    }
+    if (newton_bond || i < nlocal) {
+      f[i][0] -= out.fx;
+      f[i][1] -= out.fy;
+      torque[i][2] += out.ti;
+    }
+    if (newton_bond || j < nlocal) {
+      f[j][0] += out.fx;
+      f[j][1] += out.fy;
+      torque[j][2] += out.tj;
+    }
+    if (evflag) tally(i, j, nlocal, newton_bond, out.energy, out.fx, out.fy, dx, dy);
+  }
+  if (breaking) remove_broken(static_cast<int>(broken.size() / 2), broken.data());
+}
+
+/* ----------------------------------------------------------------------
+   the bonds (i1, i2) of the list that broke this step leave the bond
+   arrays of their local atoms (with their slots in the fix); the global
+   bond count falls by the bonds broken, each counted by the rank that
+   owns its lower-ID atom
+------------------------------------------------------------------------- */
+
+void BondBeam::remove_broken(int nbroken, const int *pairs)
+{
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  int *num_bond = atom->num_bond;
+  int **bond_type = atom->bond_type;
+  tagint **bond_atom = atom->bond_atom;
+  bigint counted = 0;
+  for (int b = 0; b < nbroken; b++) {
+    const int ends[2] = {pairs[2 * b], pairs[2 * b + 1]};
+    const int lo = tag[ends[0]] < tag[ends[1]] ? ends[0] : ends[1];
+    if (lo < nlocal) counted++;
+    for (int e = 0; e < 2; e++) {
+      const int i = ends[e], j = ends[1 - e];
+      if (i >= nlocal) continue;
+      for (int m = 0; m < num_bond[i]; m++)
+        if (bond_atom[i][m] == tag[j]) {
+          const int last = num_bond[i] - 1;
+          fix_state->remove_slot(i, m);
+          bond_atom[i][m] = bond_atom[i][last];
+          bond_type[i][m] = bond_type[i][last];
+          num_bond[i] = last;
+          break;
+        }
+    }
+  }
+  bigint total;
+  MPI_Allreduce(&counted, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  atom->nbonds -= total;
+}
+
+/* ----------------------------------------------------------------------
+   energy and virial of a bond whose force on j is (fx, fy), d = x_j - x_i
+   (Bond::ev_tally_xyz, which LAMMPS 2021 does not have)
+------------------------------------------------------------------------- */
+
+void BondBeam::tally(int i, int j, int nlocal, int newton_bond, double ebond, double fx, double fy,
+                     double dx, double dy)
+{
+  double share = 1.0;
+  if (!newton_bond) share = 0.5 * ((i < nlocal) + (j < nlocal));
+  if (eflag_either) {
+    if (eflag_global) energy += share * ebond;
+    if (eflag_atom) {
+      if (newton_bond || i < nlocal) eatom[i] += 0.5 * ebond;
+      if (newton_bond || j < nlocal) eatom[j] += 0.5 * ebond;
+    }
+  }
+  if (vflag_either) {
+    const double v[6] = {dx * fx, dy * fy, 0.0, dx * fy, 0.0, 0.0};
+    if (vflag_global)
+      for (int k = 0; k < 6; k++) virial[k] += share * v[k];
+    if (vflag_atom) {
+      if (newton_bond || i < nlocal)
+        for (int k = 0; k < 6; k++) vatom[i][k] += 0.5 * v[k];
+      if (newton_bond || j < nlocal)
+        for (int k = 0; k < 6; k++) vatom[j][k] += 0.5 * v[k];
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondBeam::equilibrium_distance(int /*type*/)
+{
+  // the longest bond seen so far (LAMMPS checks the ghost cutoff with it)
+  return L0_max;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondBeam::write_restart(FILE *fp)
+{
+  fwrite(&coeffs[1], sizeof(BeamCoeff), atom->nbondtypes, fp);
+}
+
+void BondBeam::read_restart(FILE *fp)
+{
+  allocate();
+  if (comm->me == 0)
+    utils::sfread(FLERR, &coeffs[1], sizeof(BeamCoeff), atom->nbondtypes, fp, nullptr, error);
+  MPI_Bcast(&coeffs[1], atom->nbondtypes * sizeof(BeamCoeff), MPI_CHAR, 0, world);
+  for (int i = 1; i <= atom->nbondtypes; i++) setflag[i] = 1;
+}
+
+void BondBeam::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++) {
+    const BeamCoeff &c = coeffs[i];
+    if (c.G > 0.0)
+      fprintf(fp, "%d %.15g %.15g %.15g shear %.15g %.15g\n", i, c.E, c.A, c.I, c.G, c.ks);
+    else
+      fprintf(fp, "%d %.15g %.15g %.15g\n", i, c.E, c.A, c.I);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   energy of the bond of local atoms i and j; fforce: its axial force
+   (force on i = fforce * (x_i - x_j))
+------------------------------------------------------------------------- */
+
+double BondBeam::single(int type, double /*rsq*/, int i, int j, double &fforce)
+{
+  fforce = 0.0;
+  if (!fix_state) return 0.0;
+  const double *ref = fix_state->stored_reference(i, j);
+  if (!ref) ref = fix_state->stored_reference(j, i);
+  if (!ref) return 0.0;
+  // the reference is in the order lower atom ID first
+  const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = (lo == i) ? j : i;
+  double **x = atom->x;
+  double **quat = fix_state->avec->quat;
+  double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], 0.0};
+  MCACompat::minimum_image(domain, d);
+  const BeamForce out =
+      beam_force_2d(coeffs[type], ref, d[0], d[1], planar_angle(quat[lo][0], quat[lo][3]),
+                    planar_angle(quat[hi][0], quat[hi][3]));
+  fforce = -out.N / sqrt(d[0] * d[0] + d[1] * d[1]);
+  return out.energy;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondBeam::memory_usage()
+{
+  double bytes = Bond::memory_usage();
+  bytes += static_cast<double>(maxrecords) * NREC * sizeof(double);
+  return bytes;
+}

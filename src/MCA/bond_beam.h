@@ -1,0 +1,86 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef BOND_CLASS
+// clang-format off
+BondStyle(beam,BondBeam);
+// clang-format on
+#else
+
+#ifndef LMP_BOND_BEAM_H
+#define LMP_BOND_BEAM_H
+
+#include "beam_kernels.h"
+#include "bond.h"
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   bond_style beam: the 2-D co-rotational beam of the NUMFRAC lattice
+   (beam_kernels.h) between particles of atom_style mca, whose
+   quaternions carry the orientations.  The reference state of each bond
+   lives in the internal fix BEAM_STATE; the style copies it into an array
+   parallel to the bond list whenever the list is built.
+------------------------------------------------------------------------- */
+
+class BondBeam : public Bond {
+ public:
+  // what the style keeps for each entry of the bond list: the reference
+  // state (order lower atom ID first), whether that is the list's order
+  // reversed, and the strength factor of the bond
+  enum { REC_SWAP = BeamKernels::NREF, REC_STRENGTH, NREC };
+
+  BondBeam(class LAMMPS *);
+  ~BondBeam() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double equilibrium_distance(int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_data(FILE *) override;
+  double single(int, double, int, int, double &) override;
+  double memory_usage() override;
+
+ protected:
+  BeamKernels::BeamCoeff *coeffs;    // by bond type
+  class FixBeamState *fix_state;
+  double L0_max;    // longest reference length seen (communication cutoff check)
+
+  // the records of every entry of a bond list (i1, i2, type) into
+  // records[n * NREC], when the list was built again since the last call;
+  // entry (n, k) of the list is list[n * row_stride + k * column_stride]
+  bigint built_at;
+  int built_n;
+  bool references_stale(int nlist) const;
+  void fill_records(int nlist, const int *list, long row_stride, long column_stride,
+                    double *records);
+
+  // breaking: any type breakable; bonds broken this step (entries i1 i2)
+  int breaking;
+  void remove_broken(int nbroken, const int *pairs);
+
+  void allocate();
+
+ private:
+  double *records;
+  int maxrecords;
+  void tally(int i, int j, int nlocal, int newton_bond, double ebond, double fx, double fy,
+             double dx, double dy);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,276 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+#include "fix_beam_state.h"
+
+#include "atom.h"
+#include "atom_masks.h"
+#include "atom_vec_mca.h"
+#include "comm.h"
+#include "error.h"
+#include "mca_compat.h"
+#include "memory.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using namespace BeamKernels;
+
+/* ----------------------------------------------------------------------
+   fix ID group BEAM_STATE (made by bond_style beam)
+------------------------------------------------------------------------- */
+
+FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), avec(nullptr), maxbond(0), state(nullptr), nmax_old(0)
+{
+  if (narg != 3) error->all(FLERR, "Illegal fix BEAM_STATE command (internal fix of bond beam)");
+  if (!atom->molecular || atom->bond_per_atom <= 0)
+    error->all(FLERR, "Fix BEAM_STATE requires an atom style with bonds");
+
+  restart_peratom = 1;
+  comm_forward = 4;
+  // under KOKKOS: syncs only the orientations, itself (send_orientations)
+  datamask_read = EMPTY_MASK;
+  datamask_modify = EMPTY_MASK;
+  maxbond = atom->bond_per_atom;
+  avec = MCAAtomFields::find(atom);
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixBeamState::~FixBeamState()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(state);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixBeamState::setmask()
+{
+  return PRE_FORCE | MIN_PRE_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixBeamState::init()
+{
+  avec = MCAAtomFields::find(atom);
+  if (!avec) error->all(FLERR, "Bond style beam requires atom_style mca (the orientations)");
+  if (atom->bond_per_atom != maxbond)
+    error->all(FLERR,
+               "Bond style beam: the bonds per atom changed from {} to {} after the beams "
+               "were defined",
+               maxbond, atom->bond_per_atom);
+}
+
+/* ----------------------------------------------------------------------
+   the ghosts' orientations before the bond forces
+------------------------------------------------------------------------- */
+
+void FixBeamState::setup_pre_force(int /*vflag*/)
+{
+  send_orientations();
+}
+
+void FixBeamState::pre_force(int /*vflag*/)
+{
+  send_orientations();
+}
+
+void FixBeamState::min_pre_force(int /*vflag*/)
+{
+  send_orientations();
+}
+
+void FixBeamState::send_orientations()
+{
+  avec->orientation_to_host();
+  MCACompat::forward_comm(comm, this);
+  avec->orientation_changed_on_host();
+}
+
+int FixBeamState::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  double **quat = avec->quat;
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const double *q = quat[list[k]];
+    buf[m++] = q[0];
+    buf[m++] = q[1];
+    buf[m++] = q[2];
+    buf[m++] = q[3];
+  }
+  return m;
+}
+
+void FixBeamState::unpack_forward_comm(int n, int first, double *buf)
+{
+  double **quat = avec->quat;
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    quat[i][0] = buf[m++];
+    quat[i][1] = buf[m++];
+    quat[i][2] = buf[m++];
+    quat[i][3] = buf[m++];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   slot of the bond of local atom i with partner ID, or nullptr
+------------------------------------------------------------------------- */
+
+double *FixBeamState::find_slot(int i, tagint partner) const
+{
+  const tagint *bond_atom = atom->bond_atom[i];
+  const int nbond = atom->num_bond[i];
+  for (int m = 0; m < nbond; m++)
+    if (bond_atom[m] == partner) return &state[i][m * NSLOT];
+  return nullptr;
+}
+
+const double *FixBeamState::stored_reference(int i, int j) const
+{
+  if (i >= atom->nlocal) return nullptr;
+  const double *slot = find_slot(i, atom->tag[j]);
+  if (!slot || slot[SLOT_PARTNER] != static_cast<double>(atom->tag[j])) return nullptr;
+  return slot + SLOT_REF;
+}
+
+/* ---------------------------------------------------------------------- */
+
+const double *FixBeamState::reference(int i1, int i2, int newton_bond)
+{
+  const tagint *tag = atom->tag;
+  double *slot = find_slot(i1, tag[i2]);
+  if (!slot) return nullptr;
+  if (slot[SLOT_PARTNER] == static_cast<double>(tag[i2])) return slot + SLOT_REF;
+
+  // a new bond: stress-free in its present geometry, in the order lower
+  // atom ID first (both copies of a bond under newton_bond off hold the
+  // same numbers, and the element is evaluated in that order)
+  const int lo = (tag[i1] < tag[i2]) ? i1 : i2, hi = (lo == i1) ? i2 : i1;
+  double **x = atom->x;
+  double **quat = avec->quat;
+  slot[SLOT_PARTNER] = static_cast<double>(tag[i2]);
+  reference_state(x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], planar_angle(quat[lo][0], quat[lo][3]),
+                  planar_angle(quat[hi][0], quat[hi][3]), slot + SLOT_REF);
+
+  // with newton_bond off the partner stores the bond too; its owner sets
+  // a ghost partner's copy when it lists the bond, at the same step
+  if (!newton_bond && i2 < atom->nlocal) {
+    double *mirror = find_slot(i2, tag[i1]);
+    if (mirror && mirror[SLOT_PARTNER] != static_cast<double>(tag[i1])) {
+      mirror[SLOT_PARTNER] = static_cast<double>(tag[i1]);
+      for (int k = 0; k < NREF; k++) mirror[SLOT_REF + k] = slot[SLOT_REF + k];
+    }
+  }
+  return slot + SLOT_REF;
+}
+
+/* ----------------------------------------------------------------------
+   bond m of local atom i is removed: the bond arrays move their last bond
+   into slot m, and so does the fix
+------------------------------------------------------------------------- */
+
+void FixBeamState::remove_slot(int i, int m)
+{
+  const int last = atom->num_bond[i] - 1;
+  if (m != last) memcpy(&state[i][m * NSLOT], &state[i][last * NSLOT], NSLOT * sizeof(double));
+  memset(&state[i][last * NSLOT], 0, NSLOT * sizeof(double));
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixBeamState::memory_usage()
+{
+  return static_cast<double>(atom->nmax) * maxbond * NSLOT * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   new rows start empty: partner ID 0 belongs to no atom
+------------------------------------------------------------------------- */
+
+void FixBeamState::grow_arrays(int nmax)
+{
+  const int ncol = (maxbond > 0 ? maxbond : 1) * NSLOT;
+  const int old = state ? nmax_old : 0;
+  memory->grow(state, nmax, ncol, "beam:state");
+  for (int i = old; i < nmax; i++) memset(state[i], 0, ncol * sizeof(double));
+  nmax_old = nmax;
+}
+
+void FixBeamState::copy_arrays(int i, int j, int /*delflag*/)
+{
+  memcpy(state[j], state[i], maxbond * NSLOT * sizeof(double));
+}
+
+int FixBeamState::pack_exchange(int i, double *buf)
+{
+  const int n = atom->num_bond[i] * NSLOT;
+  buf[0] = atom->num_bond[i];
+  memcpy(buf + 1, state[i], n * sizeof(double));
+  return n + 1;
+}
+
+int FixBeamState::unpack_exchange(int nlocal, double *buf)
+{
+  const int nbond = static_cast<int>(buf[0]);
+  memset(state[nlocal], 0, maxbond * NSLOT * sizeof(double));
+  memcpy(state[nlocal], buf + 1, nbond * NSLOT * sizeof(double));
+  return nbond * NSLOT + 1;
+}
+
+/* ----------------------------------------------------------------------
+   restart record of an atom: its length, the bond count, the slots
+------------------------------------------------------------------------- */
+
+int FixBeamState::pack_restart(int i, double *buf)
+{
+  const int n = atom->num_bond[i] * NSLOT;
+  buf[0] = n + 2;
+  buf[1] = atom->num_bond[i];
+  memcpy(buf + 2, state[i], n * sizeof(double));
+  return n + 2;
+}
+
+void FixBeamState::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  const int nbond = static_cast<int>(extra[nlocal][m + 1]);
+  if (nbond > maxbond)
+    error->one(FLERR, "Fix BEAM_STATE: a restart record has {} bonds, more than the {} per atom",
+               nbond, maxbond);
+  memset(state[nlocal], 0, maxbond * NSLOT * sizeof(double));
+  memcpy(state[nlocal], &extra[nlocal][m + 2], nbond * NSLOT * sizeof(double));
+}
+
+int FixBeamState::size_restart(int nlocal)
+{
+  return atom->num_bond[nlocal] * NSLOT + 2;
+}
+
+int FixBeamState::maxsize_restart()
+{
+  return maxbond * NSLOT + 2;
+}

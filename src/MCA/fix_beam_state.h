@@ -1,0 +1,91 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(BEAM_STATE,FixBeamState);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_BEAM_STATE_H
+#define LMP_FIX_BEAM_STATE_H
+
+#include "beam_kernels.h"
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   internal fix created by bond_style beam: the reference state of every
+   bond (the stress-free geometry it had when first seen), kept in slots
+   parallel to the bond arrays of its atom (bond_atom[i][m] <-> slot m of
+   atom i).  A slot holds the partner's atom ID, so a slot whose bond was
+   replaced (delete_bonds, create_bonds) is recognised as new.  Slots move
+   with their atoms and are written to restart files.  The fix also sends
+   the orientations of the owned atoms to their ghosts before the forces
+   (atom_style mca sends them only with the ghost shells).
+------------------------------------------------------------------------- */
+
+class FixBeamState : public Fix {
+ public:
+  enum { SLOT_PARTNER, SLOT_REF, NSLOT = SLOT_REF + BeamKernels::NREF };
+
+  FixBeamState(class LAMMPS *, int, char **);
+  ~FixBeamState() override;
+  int setmask() override;
+  void init() override;
+  void setup_pre_force(int) override;
+  void pre_force(int) override;
+  void min_pre_force(int) override;
+
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+
+  double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+
+  // the reference state of entry (i1, i2) of a bond list, i1 the local
+  // atom that stores the bond, in the order lower atom ID first: set from
+  // the present geometry if the bond is new (and in the partner's copy if
+  // it is a local atom as well); returns the stored reference, or nullptr
+  // if atom i1 has no such bond
+  const double *reference(int i1, int i2, int newton_bond);
+
+  // the reference of a bond as stored by atom i (local), or nullptr
+  const double *stored_reference(int i, int j) const;
+
+  // before bond m of local atom i is removed (num_bond[i] not yet lowered)
+  void remove_slot(int i, int m);
+
+  // a bond style that has the orientations on another memory space
+  class MCAAtomFields *avec;
+
+ private:
+  int maxbond;       // bond slots per atom
+  double **state;    // maxbond * NSLOT values per atom
+  int nmax_old;      // rows allocated
+  void send_orientations();
+  double *find_slot(int i, tagint partner) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
