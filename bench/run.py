@@ -42,7 +42,7 @@ def parse_log(text):
                      r"([\d.]+) \| ([\d.]+) \| ([\d.]+) Mbytes", text)
     neighs = re.findall(r"Ave neighs/atom = ([\d.eE+-]+)", text)
     sections = {}
-    for name in ("Pair", "Neigh", "Comm", "Output", "Modify", "Other"):
+    for name in ("Pair", "Bond", "Neigh", "Comm", "Output", "Modify", "Other"):
         m = re.findall(rf"^{name}\s+\|\s*[\d.]+\s*\|\s*([\d.]+)\s*\|.*\|\s*([\d.]+)\s*$", text,
                        re.M)
         if m:

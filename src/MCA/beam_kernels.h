@@ -34,7 +34,9 @@
    by +90 degrees; da/dx_j = e_perp / L gives V with the current L), so the
    element conserves linear and angular momentum and energy, and a rigid
    motion of any size gives zero force.  Phi = 12 EI / (k_s G A L0^2) is the
-   Timoshenko shear correction (0: Euler-Bernoulli).
+   Timoshenko shear correction (0: Euler-Bernoulli).  The shear beam
+   (MODEL_SPRINGS) is the same element with N = k_n u, M_i = k_r q_i,
+   M_j = k_r q_j: E = k_n u^2 / 2 + k_r (q_i^2 + q_j^2) / 2.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_BEAM_KERNELS_H
@@ -49,9 +51,16 @@ namespace BeamKernels {
 
   enum BeamScatter { SCATTER_NONE = 0, SCATTER_UNIFORM = 1, SCATTER_WEIBULL = 2 };
 
+  // the end moments of a bond: the Euler-Bernoulli beam, or the shear
+  // beam of NUMFRAC's ice lattices (digest A.4): a normal spring k_n and a
+  // rotational spring k_r at each end, M_i = k_r q_i, M_j = k_r q_j
+  enum BeamModel { MODEL_BEAM = 0, MODEL_SPRINGS = 1 };
+
   // the section and strength of one bond type (plain record: copied to a device)
   struct BeamCoeff {
-    double E, A, I;    // Young's modulus, area, second moment of area
+    int model;         // BeamModel
+    double kn, kr;     // springs: normal and rotational stiffness
+    double E, A, I;    // Young's modulus, area, second moment of area (springs: A = I = 1)
     double G, ks;      // shear modulus and shear coefficient (G = 0: Euler-Bernoulli)
     double EA, EI;
     double shear;      // 12 EI / (ks G A): Phi = shear / L0^2
@@ -61,6 +70,7 @@ namespace BeamKernels {
     double tau0;       // shear strength
     double fibre;      // distance of the outer fibre (0: no bending stress)
     double tan_phi;    // friction of the Mohr-Coulomb branch
+    double phi_deg;    // its angle as given (degrees)
     int scatter;       // BeamScatter of the strengths from bond to bond
     int seed;
     double scatter_width;    // uniform: half width; Weibull: modulus m
@@ -105,6 +115,24 @@ namespace BeamKernels {
     ref[REF_BJ] = wrap_angle(a - tj);
   }
 
+  // the stiffness of a bond of reference length L0: N = axial u,
+  // M_i = own q_i + cross q_j, M_j = cross q_i + own q_j
+  MCA_INLINE void end_stiffness(const BeamCoeff &c, const double L0, double &axial, double &own,
+                                double &cross)
+  {
+    if (c.model == MODEL_SPRINGS) {
+      axial = c.kn;
+      own = c.kr;
+      cross = 0.0;
+      return;
+    }
+    const double phi = c.shear / (L0 * L0);
+    const double k = c.EI / (L0 * (1.0 + phi));
+    axial = c.EA / L0;
+    own = k * (4.0 + phi);
+    cross = k * (2.0 - phi);
+  }
+
   MCA_INLINE BeamForce beam_force_2d(const BeamCoeff &c, const double *ref, const double dx,
                                      const double dy, const double ti, const double tj)
   {
@@ -116,11 +144,11 @@ namespace BeamKernels {
     const double qi = wrap_angle(ti + ref[REF_BI] - a);
     const double qj = wrap_angle(tj + ref[REF_BJ] - a);
     const double u = L - L0;
-    const double phi = c.shear / (L0 * L0);
-    const double k = c.EI / (L0 * (1.0 + phi));
-    out.Mi = k * ((4.0 + phi) * qi + (2.0 - phi) * qj);
-    out.Mj = k * ((2.0 - phi) * qi + (4.0 + phi) * qj);
-    out.N = c.EA * u / L0;
+    double axial, own, cross;
+    end_stiffness(c, L0, axial, own, cross);
+    out.Mi = own * qi + cross * qj;
+    out.Mj = cross * qi + own * qj;
+    out.N = axial * u;
     out.V = (out.Mi + out.Mj) / L;
     out.energy = 0.5 * out.N * u + 0.5 * (qi * out.Mi + qj * out.Mj);
     // on j: -(N e - V e_perp), e_perp = (-ey, ex)

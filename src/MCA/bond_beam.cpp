@@ -82,11 +82,13 @@ void BondBeam::settings(int narg, char **arg)
 /* ----------------------------------------------------------------------
    bond_coeff N E A I [shear G ks] [break sigma0 tau0] [bending c]
                       [mohr phi] [scatter uniform w seed | weibull m seed]
+   bond_coeff N shearbeam kn kr [break N0 V0] [mohr phi] [scatter ...]
 ------------------------------------------------------------------------- */
 
 void BondBeam::coeff(int narg, char **arg)
 {
-  if (narg < 4) utils::missing_cmd_args(FLERR, "bond_coeff beam (N E A I)", error);
+  if (narg < 4)
+    utils::missing_cmd_args(FLERR, "bond_coeff beam (N E A I or N shearbeam kn kr)", error);
   if (!allocated) allocate();
 
   int ilo, ihi;
@@ -99,9 +101,18 @@ void BondBeam::coeff(int narg, char **arg)
     if (value <= 0.0) error->all(FLERR, "Bond_coeff beam: {} = {} must be > 0", what, value);
     return value;
   };
-  c.E = positive("E", arg[1]);
-  c.A = positive("A", arg[2]);
-  c.I = positive("I", arg[3]);
+  if (strcmp(arg[1], "shearbeam") == 0) {
+    // NUMFRAC's shear beam: the strengths are forces (A = 1) and moments (I = 1)
+    c.model = MODEL_SPRINGS;
+    c.kn = positive("shearbeam kn", arg[2]);
+    c.kr = positive("shearbeam kr", arg[3]);
+    c.A = c.I = 1.0;
+  } else {
+    c.model = MODEL_BEAM;
+    c.E = positive("E", arg[1]);
+    c.A = positive("A", arg[2]);
+    c.I = positive("I", arg[3]);
+  }
   bool bending = false, mohr = false;
   int iarg = 4;
   while (iarg < narg) {
@@ -112,6 +123,10 @@ void BondBeam::coeff(int narg, char **arg)
     };
     if (word == "shear") {
       need(2, "shear (G ks)");
+      if (c.model == MODEL_SPRINGS)
+        error->all(FLERR,
+                   "Bond_coeff beam: shear (Timoshenko) applies to beams (N E A I), not to "
+                   "shearbeam");
       c.G = positive("shear G", arg[iarg + 1]);
       c.ks = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       if (c.ks <= 0.0 || c.ks > 1.0)
@@ -125,6 +140,10 @@ void BondBeam::coeff(int narg, char **arg)
       iarg += 3;
     } else if (word == "bending") {
       need(1, "bending (fibre distance)");
+      if (c.model == MODEL_SPRINGS)
+        error->all(FLERR,
+                   "Bond_coeff beam: bending (a fibre stress) needs a beam section (N E A "
+                   "I), not shearbeam");
       c.fibre = positive("bending (fibre distance)", arg[iarg + 1]);
       bending = true;
       iarg += 2;
@@ -135,6 +154,7 @@ void BondBeam::coeff(int narg, char **arg)
         error->all(FLERR, "Bond_coeff beam: mohr friction angle = {} must be in [0, 90) degrees",
                    phi);
       c.mohr = 1;
+      c.phi_deg = phi;
       c.tan_phi = tan(phi * MathConst::MY_PI / 180.0);
       mohr = true;
       iarg += 2;
@@ -409,10 +429,18 @@ void BondBeam::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->nbondtypes; i++) {
     const BeamCoeff &c = coeffs[i];
-    if (c.G > 0.0)
-      fprintf(fp, "%d %.15g %.15g %.15g shear %.15g %.15g\n", i, c.E, c.A, c.I, c.G, c.ks);
-    else
-      fprintf(fp, "%d %.15g %.15g %.15g\n", i, c.E, c.A, c.I);
+    std::string line = (c.model == MODEL_SPRINGS)
+        ? fmt::format("{} shearbeam {:.17g} {:.17g}", i, c.kn, c.kr)
+        : fmt::format("{} {:.17g} {:.17g} {:.17g}", i, c.E, c.A, c.I);
+    if (c.G > 0.0) line += fmt::format(" shear {:.17g} {:.17g}", c.G, c.ks);
+    if (c.breakable) line += fmt::format(" break {:.17g} {:.17g}", c.sigma0, c.tau0);
+    if (c.fibre > 0.0) line += fmt::format(" bending {:.17g}", c.fibre);
+    if (c.mohr) line += fmt::format(" mohr {:.17g}", c.phi_deg);
+    if (c.scatter)
+      line += fmt::format(" scatter {} {:.17g} {}",
+                          c.scatter == SCATTER_UNIFORM ? "uniform" : "weibull", c.scatter_width,
+                          c.seed);
+    fprintf(fp, "%s\n", line.c_str());
   }
 }
 

@@ -164,6 +164,10 @@ const double *FixBeamState::reference(int i1, int i2, int newton_bond)
   if (!slot) return nullptr;
   if (slot[SLOT_PARTNER] == static_cast<double>(tag[i2])) return slot + SLOT_REF;
 
+  // a bond that moved to another slot of the atom (delete_bonds compresses
+  // the bond arrays): its state is found by the partner's ID and follows it
+  if (take_moved_state(i1, slot, tag[i2])) return slot + SLOT_REF;
+
   // a new bond: stress-free in its present geometry, in the order lower
   // atom ID first (both copies of a bond under newton_bond off hold the
   // same numbers, and the element is evaluated in that order)
@@ -178,12 +182,37 @@ const double *FixBeamState::reference(int i1, int i2, int newton_bond)
   // a ghost partner's copy when it lists the bond, at the same step
   if (!newton_bond && i2 < atom->nlocal) {
     double *mirror = find_slot(i2, tag[i1]);
-    if (mirror && mirror[SLOT_PARTNER] != static_cast<double>(tag[i1])) {
+    if (mirror && mirror[SLOT_PARTNER] != static_cast<double>(tag[i1]) &&
+        !take_moved_state(i2, mirror, tag[i1])) {
       mirror[SLOT_PARTNER] = static_cast<double>(tag[i1]);
       for (int k = 0; k < NREF; k++) mirror[SLOT_REF + k] = slot[SLOT_REF + k];
     }
   }
   return slot + SLOT_REF;
+}
+
+/* ----------------------------------------------------------------------
+   the state of partner ID among the slots of atom i, swapped into slot
+------------------------------------------------------------------------- */
+
+bool FixBeamState::take_moved_state(int i, double *slot, tagint partner)
+{
+  // a bond moved from the end of the arrays (the last slot, now beyond the
+  // count) or from another live slot; what it leaves behind beyond the
+  // count is cleared, so that a bond made again later starts stress-free
+  const double id = static_cast<double>(partner);
+  for (int m = 0; m < maxbond; m++) {
+    double *other = &state[i][m * NSLOT];
+    if (other == slot || other[SLOT_PARTNER] != id) continue;
+    for (int k = 0; k < NSLOT; k++) {
+      const double value = other[k];
+      other[k] = slot[k];
+      slot[k] = value;
+    }
+    if (m >= atom->num_bond[i]) memset(other, 0, NSLOT * sizeof(double));
+    return true;
+  }
+  return false;
 }
 
 /* ----------------------------------------------------------------------

@@ -83,6 +83,7 @@ class FixBeamState : public Fix {
   int nmax_old;      // rows allocated
   void send_orientations();
   double *find_slot(int i, tagint partner) const;
+  bool take_moved_state(int i, double *slot, tagint partner);
 };
 
 }    // namespace LAMMPS_NS

@@ -89,6 +89,7 @@ def hex_patch(radius=3.1, c=1.0):
 
 COEFF = "bond_style beam\nbond_coeff 1 100.0 0.1 0.001\n"
 COEFF_SHEAR = "bond_style beam\nbond_coeff 1 100.0 0.1 0.001 shear 40.0 0.8333333333333334\n"
+COEFF_SPRINGS = "bond_style beam\nbond_coeff 1 shearbeam 10.0 0.05\n"
 
 
 def snapshot(build, directory, script, name="state", extra_args=(), nprocs=1):
@@ -216,7 +217,8 @@ run             40000
 # null space and objectivity (cases 1, 3)
 
 
-@pytest.mark.parametrize("coeff", [COEFF, COEFF_SHEAR], ids=["euler", "timoshenko"])
+@pytest.mark.parametrize("coeff", [COEFF, COEFF_SHEAR, COEFF_SPRINGS],
+                         ids=["euler", "timoshenko", "shearbeam"])
 def test_rigid_motion_keeps_energy_and_turns_forces(build, tmp_path, coeff):
     sites, bonds = hex_patch()
     data = beam_data(tmp_path / "patch.data", sites, bonds, ((-6, 6), (-6, 6)))
@@ -313,14 +315,9 @@ def test_energy_and_momenta_are_conserved(build, tmp_path):
 # hexagonal lattice moduli (case 7)
 
 
-@pytest.mark.parametrize("h_over_l", [0.1, 0.3, 0.6])
-def test_hexagonal_beam_lattice_moduli(build, tmp_path, h_over_l):
-    import sys
-    sys.path.insert(0, str(mcatest.ROOT / "tools"))
-    import lattice_calibration as lc
-
-    e, length = 50.0, 1.0
-    area, inertia = h_over_l * length, (h_over_l * length) ** 3 / 12.0
+def lattice_moduli(build, directory, coeff_words, strain=1.0e-6, length=1.0):
+    """E_2D and nu_2D of a periodic hexagonal lattice of bonds from its stress
+    under a uniaxial strain (the nodes of a Bravais lattice do not turn)."""
     nx, ny = 6, 4
     sites = []
     for j in range(ny):
@@ -336,30 +333,60 @@ def test_hexagonal_beam_lattice_moduli(build, tmp_path, h_over_l):
             d -= np.array([lx, ly]) * np.round(d / np.array([lx, ly]))
             if np.hypot(*d) < 1.01 * length:
                 bonds.add((a, b))
-    data = beam_data(tmp_path / "lattice.data", sites, sorted(bonds), ((0, lx), (0, ly)))
-    strain = 1.0e-6
+    data = beam_data(directory / "lattice.data", sites, sorted(bonds), ((0, lx), (0, ly)))
     script = header(data, "p p p") + f"""
 bond_style      beam
-bond_coeff      1 {e} {area} {inertia}
+bond_coeff      1 {coeff_words}
 thermo_style    custom step pxx pyy pxy
 thermo_modify   norm no format float %.17g
 run             0 post no
 change_box      all x scale {1.0 + strain} remap
 run             0 post no
 """
-    build.run(script, tmp_path)
-    thermo = mcatest.read_thermo(tmp_path / "log.lammps")
+    build.run(script, directory)
+    thermo = mcatest.read_thermo(directory / "log.lammps")
     # 2-D pressure = -stress (force per length); C11 = sxx / exx, C12 = syy / exx
     c11, c12 = -thermo["Pxx"][-1] / strain, -thermo["Pyy"][-1] / strain
-    e2, nu2 = (c11 * c11 - c12 * c12) / c11, c12 / c11
+    return (c11 * c11 - c12 * c12) / c11, c12 / c11
+
+
+def calibration_tool():
+    import sys
+    sys.path.insert(0, str(mcatest.ROOT / "tools"))
+    import lattice_calibration
+    return lattice_calibration
+
+
+@pytest.mark.parametrize("h_over_l", [0.1, 0.3, 0.6])
+def test_hexagonal_beam_lattice_moduli(build, tmp_path, h_over_l):
+    lc = calibration_tool()
+    e, length = 50.0, 1.0
+    area, inertia = h_over_l * length, (h_over_l * length) ** 3 / 12.0
+    e2, nu2 = lattice_moduli(build, tmp_path, f"{e} {area} {inertia}")
     kn, ks = lc.beam_stiffness(e, area, inertia, length)
     ref = lc.beam_moduli(kn, ks)
     e2_ref, nu2_ref = ref["E2"], ref["nu2"]
     print(f"h/L {h_over_l}: E_2D {e2:.8f} (tool {e2_ref:.8f}), nu_2D {nu2:.8f} (tool {nu2_ref:.8f},"
           f" rectangular section {lc.rectangular_beam_nu2(h_over_l):.8f})")
+    # (strain 1e-6: the geometric nonlinearity is of that order)
     assert e2 == pytest.approx(e2_ref, rel=1e-5)
     assert nu2 == pytest.approx(nu2_ref, rel=1e-5, abs=1e-7)
     assert nu2 == pytest.approx(lc.rectangular_beam_nu2(h_over_l), rel=1e-5, abs=1e-7)
+
+
+@pytest.mark.parametrize("target", [(5.0, 0.25), (2.0, 0.0), (1.0, -0.5)])
+def test_shear_beam_lattice_has_the_calibrated_moduli(build, tmp_path, target):
+    """The shear beam (digest A.4): k_n and k_r from the tool's mapping for
+    a target E_2D, nu_2D (k_s = 2 k_r / L0^2) give that lattice."""
+    lc = calibration_tool()
+    e2_target, nu2_target = target
+    kn, ks = lc.beam_springs(e2_target, nu2_target)
+    kr = lc.shear_beam_kr(ks, 1.0)
+    e2, nu2 = lattice_moduli(build, tmp_path, f"shearbeam {kn:.17g} {kr:.17g}")
+    print(f"target E_2D {e2_target}, nu_2D {nu2_target}: k_n {kn:.6f}, k_r {kr:.6f}; "
+          f"lattice E_2D {e2:.8f}, nu_2D {nu2:.8f}")
+    assert e2 == pytest.approx(e2_target, rel=1e-5)
+    assert nu2 == pytest.approx(nu2_target, rel=1e-5, abs=1e-6)
 
 
 # ---------------------------------------------------------------------------
@@ -471,6 +498,22 @@ BAD = [
     ("G", "bond_coeff 1 1.0 0.1 0.001 shear 0 0.8", r"shear G = 0 must be > 0"),
     ("ks", "bond_coeff 1 1.0 0.1 0.001 shear 1 1.5", r"shear ks = 1.5 must be in \(0, 1\]"),
     ("keyword", "bond_coeff 1 1.0 0.1 0.001 timoshenko", r"unknown keyword 'timoshenko'"),
+    ("kn", "bond_coeff 1 shearbeam 0 1", r"Bond_coeff beam: shearbeam kn = 0 must be > 0"),
+    ("kr", "bond_coeff 1 shearbeam 1 -1", r"Bond_coeff beam: shearbeam kr = -1 must be > 0"),
+    ("shearbeam shear", "bond_coeff 1 shearbeam 1 1 shear 1 0.8",
+     r"shear \(Timoshenko\) applies to beams"),
+    ("shearbeam bending", "bond_coeff 1 shearbeam 1 1 break 1 1 bending 0.1",
+     r"bending \(a fibre stress\) needs a beam section"),
+    ("bending alone", "bond_coeff 1 1.0 0.1 0.001 bending 0.1",
+     r"bending, mohr and scatter need the break keyword"),
+    ("mohr angle", "bond_coeff 1 1.0 0.1 0.001 break 1 1 mohr 90",
+     r"mohr friction angle = 90 must be in \[0, 90\) degrees"),
+    ("scatter kind", "bond_coeff 1 1.0 0.1 0.001 break 1 1 scatter normal 0.1 5",
+     r"scatter normal is unknown \(allowed: uniform, weibull\)"),
+    ("scatter width", "bond_coeff 1 1.0 0.1 0.001 break 1 1 scatter uniform 1.0 5",
+     r"scatter uniform width = 1 must be in \[0, 1\)"),
+    ("scatter seed", "bond_coeff 1 1.0 0.1 0.001 break 1 1 scatter weibull 5 0",
+     r"scatter seed = 0 must be > 0"),
     ("missing", "bond_coeff 1 1.0 0.1", r"[Mm]issing argument|Illegal"),
     ("type", "bond_coeff 3 1.0 0.1 0.001", r"[Nn]umeric index 3 is out of bounds"),
 ]
@@ -784,3 +827,114 @@ def test_damped_integrator_kokkos_matches_the_cpu_fix(tmp_path):
     de = abs(t_kk["Ecouple"][-1] - t_cpu["Ecouple"][-1]) / t_cpu["Ecouple"][-1]
     print(f"nve/damped/kk 2 threads: trajectory {diff:.1e}, dissipated energy {de:.1e}")
     assert diff < 1e-10 and de < 1e-10
+
+
+def test_breaking_with_a_pair_style_needs_special_weights_one(build, tmp_path):
+    sites, bonds = hex_patch(1.1)
+    data = beam_data(tmp_path / "patch.data", sites, bonds, ((-3, 3), (-3, 3)))
+    script = header(data) + """
+pair_style      zero 1.0
+pair_coeff      * *
+bond_style      beam
+bond_coeff      1 1.0 0.1 0.001 break 1 1
+run             0
+"""
+    result = build.run(script, tmp_path / "a", check=False)
+    out = result.stdout + result.stderr
+    assert result.returncode != 0
+    assert re.search(r"with break requires special_bonds lj/coul 1.0 .*found lj 0 coul 0", out)
+    build.run(script.replace("pair_style ", "special_bonds   lj/coul 1.0 1.0 1.0\npair_style "),
+              tmp_path / "b")
+
+
+def test_data_file_keeps_every_coefficient(build, tmp_path):
+    sites, bonds = hex_patch()
+    data = beam_data(tmp_path / "patch.data", sites, bonds, ((-6, 6), (-6, 6)))
+    data.write_text(data.read_text().replace("1 bond types", "3 bond types"))
+    coeffs = ("bond_coeff 1 100.0 0.1 0.001 shear 40.0 0.8 break 0.2 0.1 bending 0.05 mohr 30 "
+              "scatter weibull 6 4321\n"
+              "bond_coeff 2 shearbeam 10.0 0.05 break 0.02 0.01 scatter uniform 0.3 7\n"
+              "bond_coeff 3 50.0 0.2 0.002\n")
+    first = header(data) + "bond_style beam\n" + coeffs + DEFORM + "write_data written.data\n"
+    build.run(first, tmp_path / "a")
+    text = (tmp_path / "a" / "written.data").read_text()
+    section = text[text.index("Bond Coeffs"):].split("\n\n")[1]
+    second = header(tmp_path / "a" / "written.data").replace("read_data", "bond_style beam\nread_data")
+    second += "write_data again.data\n"
+    build.run(second, tmp_path / "b")
+    again = (tmp_path / "b" / "again.data").read_text()
+    print(section)
+    assert section == again[again.index("Bond Coeffs"):].split("\n\n")[1]
+    for words in ("1 100 0.10000000000000001 0.001 shear 40 0.80000000000000004 break "
+                  "0.20000000000000001 0.10000000000000001 bending 0.050000000000000003 mohr 30 "
+                  "scatter weibull 6 4321",
+                  "2 shearbeam 10 0.050000000000000003 break 0.02 0.01 scatter uniform "
+                  "0.29999999999999999 7", "3 50 0.20000000000000001 0.002"):
+        assert words in section
+
+
+# ---------------------------------------------------------------------------
+# the example examples/beam_calving: tidal flexure at a grounding line
+
+
+def test_tidal_flexure_calves_at_the_analytic_tide(build, tmp_path):
+    """A beam shelf on a Winkler foundation, clamped at the grounding line:
+    the moment there is 2 EI beta^2 w0 and the root bond breaks at the
+    elliptic criterion's w0*, both to 0.5 % once the rate's (linear)
+    effect is extrapolated away from two tide rates."""
+    script = (mcatest.ROOT / "examples" / "beam_calving" / "in.tide").read_text()
+    results = {}
+    for rate in (0.001, 0.0005):
+        out = build.run(script, tmp_path / str(rate), variables={"rate": rate}).stdout
+        calved = re.search(r"^CALVED at tide \S+, shelf at (\S+): w0/w0\* = (\S+), "
+                           r"bonds left (\d+)", out, re.M)
+        # the first run's rows end at the tide of 0.04 (before fix halt): the last one
+        log = (tmp_path / str(rate) / "log.lammps").read_text()
+        first = log[log.index("Step"):log.index("Loop time")].splitlines()
+        names, last = first[0].split(), first[-1].split()
+        row = dict(zip(names, map(float, last)))
+        results[rate] = (float(calved.group(2)), -row["c_root"] / row["v_M0"])
+        assert int(calved.group(3)) == 119    # of 120: the root bond alone
+    slow, fast = results[0.0005], results[0.001]
+    calve = 2 * slow[0] - fast[0]
+    moment = 2 * slow[1] - fast[1]
+    print(f"w0/w0* at the break: {fast[0]:.5f} (rate 0.001), {slow[0]:.5f} (0.0005), "
+          f"extrapolated {calve:.5f}; root moment / M0 at w0 = 0.04: {fast[1]:.5f}, "
+          f"{slow[1]:.5f}, extrapolated {moment:.5f}")
+    assert calve == pytest.approx(1.0, abs=5e-3)
+    assert moment == pytest.approx(1.0, abs=5e-3)
+
+
+def test_reference_states_survive_delete_bonds(build, tmp_path):
+    """delete_bonds compresses the bond arrays: a bond that moves to
+    another slot keeps its reference (found by the partner's ID), so the
+    energy left is the energy before less that of the deleted bonds."""
+    sites, bonds = hex_patch()
+    data = beam_data(tmp_path / "patch.data", sites, bonds, ((-6, 6), (-6, 6)))
+    data.write_text(data.read_text().replace("1 atom types", "2 atom types"))
+    # the bonds of the particle at the centre are deleted; the other
+    # bonds of its neighbours move in their arrays
+    centre = int(np.argmin(np.hypot(sites[:, 0], sites[:, 1]))) + 1
+    script = header(data) + COEFF_SHEAR + DEFORM + f"""
+compute         b all bond/local engpot
+compute         p all property/local batom1 batom2
+dump            b all local 1 bonds.dump c_b c_p[1] c_p[2]
+dump_modify     b format float %.17g
+thermo_style    custom step ebond
+thermo_modify   norm no format float %.17g
+run             0 post no
+undump          b
+set             atom {centre} type 2
+delete_bonds    all atom 2 remove special
+run             0 post no
+"""
+    build.run(script, tmp_path)
+    log = (tmp_path / "log.lammps").read_text()
+    energies = [float(m) for m in re.findall(r"^\s+0\s+(\S+)\s*$", log, re.M)]
+    rows = np.loadtxt(tmp_path / "bonds.dump", skiprows=9, ndmin=2)
+    deleted = rows[(rows[:, 1] == centre) | (rows[:, 2] == centre)]
+    before, after = energies[-2], energies[-1]
+    print(f"energy {before:.12f} -> {after:.12f}; the {len(deleted)} bonds deleted had "
+          f"{deleted[:, 0].sum():.12f}; difference {before - after - deleted[:, 0].sum():.1e}")
+    assert len(deleted) == 6
+    assert before - after == pytest.approx(deleted[:, 0].sum(), rel=1e-10)

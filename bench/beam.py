@@ -1,0 +1,76 @@
+#!/usr/bin/python3
+"""Cost of bond_style beam: microseconds per bond-step on a periodic 2-D
+hexagonal lattice (in.beam: 2 nx ny particles, 3 bonds each, NVE at a small
+temperature) against LAMMPS's bond_style bpm/rotational on the same
+lattice (the build with the BPM package: LAMMPS 2026, "current"), and the
+kk variant on 1 and 2 threads (the build with KOKKOS).  Reported: the
+Bond section and the whole step per bond-step, best of --repeat runs.
+
+    eval "$(tools/mca env current)"; eval "$(tools/mca env kokkos)"
+    /usr/bin/python3 bench/beam.py [--nx 200 --ny 100] [--steps 200] [--repeat 3]
+        [--out bench/results/beam.md]
+"""
+import argparse
+import os
+import subprocess
+import tempfile
+
+from run import parse_log
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+# (label, build variable, style, switches)
+CASES = (("current cpu", "MCA_BUILD_CURRENT", "beam", ()),
+         ("current cpu", "MCA_BUILD_CURRENT", "bpm", ()),
+         ("kokkos cpu", "MCA_BUILD_KOKKOS", "beam", ()),
+         ("kokkos kk 1 thread", "MCA_BUILD_KOKKOS", "beam", ("-k", "on", "t", "1", "-sf", "kk")),
+         ("kokkos kk 2 threads", "MCA_BUILD_KOKKOS", "beam", ("-k", "on", "t", "2", "-sf", "kk")))
+
+
+def run_once(case, args, outdir):
+    label, build, style, switches = case
+    lmp = os.path.join(os.environ[build], "lmp")
+    log = os.path.join(outdir, f"log.{style}.{label.replace(' ', '_')}")
+    cmd = [lmp, "-in", os.path.join(HERE, "in.beam"), "-var", "style", style, "-var", "nx",
+           str(args.nx), "-var", "ny", str(args.ny), "-var", "nsteps", str(args.steps),
+           "-log", log, "-screen", "none"] + list(switches)
+    threads = "2" if "2 threads" in label else "1"
+    env = dict(os.environ, OMP_NUM_THREADS=threads, OMP_PROC_BIND="false")
+    subprocess.run(cmd, cwd=outdir, env=env, check=True)
+    result = parse_log(open(log).read())
+    per = 1e6 / (3 * result["atoms"] * result["steps"])
+    return {"step": result["seconds"] * per, "bond": result["sections"].get("Bond", 0.0) * per}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--nx", type=int, default=200)
+    ap.add_argument("--ny", type=int, default=100)
+    ap.add_argument("--steps", type=int, default=200)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--out", default=None)
+    args = ap.parse_args()
+    runs = {}
+    with tempfile.TemporaryDirectory() as outdir:
+        for _ in range(args.repeat):
+            for case in CASES:
+                runs.setdefault(case, []).append(run_once(case, args, outdir))
+    nbonds = 3 * 2 * args.nx * args.ny
+    lines = [f"hexagonal lattice of {2 * args.nx * args.ny} particles and {nbonds} bonds, "
+             f"{args.steps} steps, best of {args.repeat}; us per bond-step", "",
+             "| build, mode | bond style | Bond | whole step | Bond / beam current cpu |",
+             "|---|---|---|---|---|"]
+    base = min(r["bond"] for r in runs[CASES[0]])
+    for case in CASES:
+        best = min(runs[case], key=lambda r: r["bond"])
+        name = "beam" if case[2] == "beam" else "bpm/rotational"
+        lines.append(f"| {case[0]} | {name} | {best['bond']:.4f} | {best['step']:.4f} | "
+                     f"{best['bond'] / base:.2f} |")
+    text = "\n".join(lines) + "\n"
+    print(text)
+    if args.out:
+        with open(args.out, "w") as handle:
+            handle.write(text)
+
+
+if __name__ == "__main__":
+    main()
