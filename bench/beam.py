@@ -15,7 +15,7 @@ import os
 import subprocess
 import tempfile
 
-from run import parse_log
+from run import parse_log, report
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 # (label, build variable, style, switches)
@@ -65,11 +65,7 @@ def main():
         name = "beam" if case[2] == "beam" else "bpm/rotational"
         lines.append(f"| {case[0]} | {name} | {best['bond']:.4f} | {best['step']:.4f} | "
                      f"{best['bond'] / base:.2f} |")
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if args.out:
-        with open(args.out, "w") as handle:
-            handle.write(text)
+    report(lines, args.out)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,7 @@ import os
 import subprocess
 import tempfile
 
-from run import parse_log
+from run import parse_log, report
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MODES = {"cpu": (), "kk1": ("-k", "on", "t", "1", "-sf", "kk"),
@@ -67,11 +67,7 @@ def main():
             best = min(runs[(mode, style)], key=lambda r: r["step"])
             lines.append(f"| {mode} | {style} | {best['step']:.3f} | {best['pair']:.3f} | "
                          f"{best['pair'] / base:.2f} |")
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if args.out:
-        with open(args.out, "w") as handle:
-            handle.write(text)
+    report(lines, args.out)
 
 
 if __name__ == "__main__":

@@ -12,7 +12,6 @@ is a before/after comparison of two builds: compare.py.)
 """
 
 import argparse
-import os
 import tempfile
 
 from kokkos import MODES, STEPS, run_once

@@ -53,6 +53,15 @@ def parse_log(text):
             "sections": sections}
 
 
+def report(lines, out=None):
+    """Print a results table (its lines) and write it to the file out, if given."""
+    text = "\n".join(lines) + "\n"
+    print(text)
+    if out:
+        with open(out, "w") as handle:
+            handle.write(text)
+
+
 def run_one(label, style, geometry, n, ranks, steps, outdir, variables=None):
     log = os.path.join(outdir, f"log.bench.{label}.{geometry}.n{n}.{ranks}")
     cmd = ["lmp", "-in", "in.bench", "-var", "style", style, "-var", "geometry", geometry,

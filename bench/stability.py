@@ -22,11 +22,9 @@ package on PATH (``source <(tools/mca env current)``) or --lmp.
 
 import argparse
 import math
-import os
 import pathlib
 import re
 import subprocess
-import sys
 import tempfile
 
 GROWTH = 10.0

@@ -24,7 +24,7 @@ import subprocess
 import tempfile
 
 from bitwise import environment
-from run import parse_log
+from run import parse_log, report
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -73,11 +73,7 @@ def main():
         share = {k: r["sections"].get(k, 0.0) / r["seconds"] for k in ("Pair", "Comm")}
         lines.append(f"| {ranks} | {r['atoms']} | {per100:.4f} | {base / r['seconds']:.3f} | "
                      f"{100 * share['Pair']:.0f} % | {100 * share['Comm']:.0f} % |")
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if args.out:
-        with open(args.out, "w") as handle:
-            handle.write(text)
+    report(lines, args.out)
 
 
 if __name__ == "__main__":

@@ -24,6 +24,10 @@
 #include "memory_kokkos.h"
 #include "neighbor_kokkos.h"
 
+#include <algorithm>
+#include <array>
+#include <vector>
+
 using namespace LAMMPS_NS;
 using namespace BeamKernels;
 
@@ -44,7 +48,7 @@ template <class DeviceType> struct BeamForceKernel {
   Kokkos::View<BeamCoeff *, DeviceType> coeff;
   atomic_view<MCAKokkos::double_1d<DeviceType>> eatom;
   atomic_view<MCAKokkos::double_2d<DeviceType>> vatom;
-  MCAKokkos::int_2d<DeviceType> broken;    // entries (i1, i2) broken this step
+  MCAKokkos::int_2d<DeviceType> broken;    // entries (i1, i2, n) broken this step
   Kokkos::View<int, DeviceType> nbroken;
   int nlocal, newton_bond;
   int eflag_global, eflag_atom, vflag_global, vflag_atom;
@@ -52,7 +56,8 @@ template <class DeviceType> struct BeamForceKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int n, EV_FLOAT &ev) const
   {
     const int type = bondlist(n, 2);
-    if (type <= 0) return;
+    // (a bond broken since the list was built: its strength set to -1)
+    if (type <= 0 || records(n, BondBeam::REC_STRENGTH) < 0.0) return;
     const bool swap = records(n, BondBeam::REC_SWAP) != 0.0;
     const int i = swap ? bondlist(n, 1) : bondlist(n, 0);
     const int j = swap ? bondlist(n, 0) : bondlist(n, 1);
@@ -62,11 +67,12 @@ template <class DeviceType> struct BeamForceKernel {
     const BeamForce out = beam_force_2d(c, ref, dx, dy, planar_angle(quat(i, 0), quat(i, 3)),
                                         planar_angle(quat(j, 0), quat(j, 3)));
     if (c.breakable && break_measure(c, out, records(n, BondBeam::REC_STRENGTH)) >= 1.0) {
-      bondlist(n, 2) = 0;
+      records(n, BondBeam::REC_STRENGTH) = -1.0;
       const int k = Kokkos::atomic_fetch_add(&nbroken(), 1);
       if (k < (int) broken.extent(0)) {
         broken(k, 0) = bondlist(n, 0);
         broken(k, 1) = bondlist(n, 1);
+        broken(k, 2) = n;
       }
       return;
     }
@@ -177,11 +183,13 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
   kernel.torque = atomKK->k_torque.template view<DeviceType>();
   kernel.quat = avecKK->k_quat.template view<DeviceType>();
   kernel.records = k_records.template view<DeviceType>();
+  // (built on the host where no device neighbor list is requested)
+  neighborKK->k_bondlist.template sync<DeviceType>();
   kernel.bondlist = neighborKK->k_bondlist.template view<DeviceType>();
   kernel.coeff = d_coeff;
   if (breaking) {
     if ((int) d_broken.extent(0) < nlist)
-      d_broken = MCAKokkos::int_2d<DeviceType>("bond:beam_broken", nlist, 2);
+      d_broken = MCAKokkos::int_2d<DeviceType>("bond:beam_broken", nlist, 3);
     Kokkos::deep_copy(d_nbroken, 0);
     kernel.broken = d_broken;
     kernel.nbroken = d_nbroken;
@@ -209,17 +217,27 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     for (int k = 0; k < 6; k++) virial[k] += ev.v[k];
   tally.to_host<DeviceType>(eflag_atom, vflag_atom);
 
-  // broken bonds leave the bond arrays on the host (the device list keeps
-  // them as type 0 until it is built again)
+  // broken bonds leave the bond arrays on the host (on the device their
+  // records say so until the list is built again); in the order of the
+  // list entries, as the CPU style removes them, whatever order the
+  // threads found them in
   if (breaking) {
     int nbroken = 0;
     Kokkos::deep_copy(nbroken, d_nbroken);
-    auto pairs = Kokkos::create_mirror_view(d_broken);
+    std::vector<int> pairs;
     if (nbroken) {
-      Kokkos::deep_copy(pairs, d_broken);
+      auto found = Kokkos::create_mirror_view(d_broken);
+      Kokkos::deep_copy(found, d_broken);
+      std::vector<std::array<int, 3>> entries(nbroken);
+      for (int k = 0; k < nbroken; k++) entries[k] = {found(k, 2), found(k, 0), found(k, 1)};
+      std::sort(entries.begin(), entries.end());
+      for (const auto &e : entries) {
+        pairs.push_back(e[1]);
+        pairs.push_back(e[2]);
+      }
       atomKK->sync(Host, TAG_MASK | BOND_MASK);
     }
-    remove_broken(nbroken, nbroken ? pairs.data() : nullptr);
+    remove_broken(nbroken, pairs.data());
     if (nbroken) atomKK->modified(Host, BOND_MASK);
   }
 }

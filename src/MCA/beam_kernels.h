@@ -196,7 +196,8 @@ namespace BeamKernels {
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
     z ^= z >> 31;
-    const double u = (double) (z >> 11) * (1.0 / 9007199254740992.0);    // [0, 1)
+    // (0, 1): the middle of one of 2^53 bins (u = 0 would give a Weibull strength 0)
+    const double u = ((double) (z >> 11) + 0.5) * (1.0 / 9007199254740992.0);
     if (c.scatter == SCATTER_UNIFORM) return 1.0 + c.scatter_width * (2.0 * u - 1.0);
     const double m = c.scatter_width;
     return pow(-log(1.0 - u), 1.0 / m) / tgamma(1.0 + 1.0 / m);

@@ -215,6 +215,8 @@ void BondBeam::init_style()
   }
   built_at = -1;
 
+  estimate_longest_bond();
+
   breaking = 0;
   for (int i = 1; i <= atom->nbondtypes; i++)
     if (coeffs[i].breakable) breaking = 1;
@@ -226,6 +228,28 @@ void BondBeam::init_style()
                "when a pair style is defined (bonded particles interact through the pair style "
                "too, and go on doing so when the bond breaks); found lj {} coul {}",
                force->special_lj[1], force->special_coul[1]);
+}
+
+/* ----------------------------------------------------------------------
+   the longest bond now (before the first forces), for LAMMPS's check of
+   the communication cutoff against equilibrium_distance()
+------------------------------------------------------------------------- */
+
+void BondBeam::estimate_longest_bond()
+{
+  double lmax = 0.0;
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < atom->num_bond[i]; m++) {
+      const int j = atom->map(atom->bond_atom[i][m]);
+      if (j < 0) continue;
+      double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], 0.0};
+      MCACompat::minimum_image(domain, d);
+      lmax = MAX(lmax, sqrt(d[0] * d[0] + d[1] * d[1]));
+    }
+  double all;
+  MPI_Allreduce(&lmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  L0_max = MAX(L0_max, all);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -270,7 +294,9 @@ void BondBeam::fill_records(int nlist, const int *list, long row_stride, long co
   if (flagsall[0]) error->all(FLERR, "Bond style beam: a listed bond is not stored by its atom");
   if (flagsall[1])
     error->all(FLERR, "Bond style beam: a bond of zero length (two particles at one place)");
-  MPI_Allreduce(&lmax, &L0_max, 1, MPI_DOUBLE, MPI_MAX, world);
+  double all;
+  MPI_Allreduce(&lmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  L0_max = MAX(L0_max, all);
   built_at = neighbor->ncalls;
   built_n = nlist;
 }
@@ -351,7 +377,9 @@ void BondBeam::remove_broken(int nbroken, const int *pairs)
   for (int b = 0; b < nbroken; b++) {
     const int ends[2] = {pairs[2 * b], pairs[2 * b + 1]};
     const int lo = tag[ends[0]] < tag[ends[1]] ? ends[0] : ends[1];
-    if (lo < nlocal) counted++;
+    // newton_bond on: each bond is listed once, on one rank; off: on the
+    // ranks of both atoms, counted where the lower ID is owned
+    if (force->newton_bond || lo < nlocal) counted++;
     for (int e = 0; e < 2; e++) {
       const int i = ends[e], j = ends[1 - e];
       if (i >= nlocal) continue;

@@ -72,6 +72,7 @@ class BondBeam : public Bond {
   void remove_broken(int nbroken, const int *pairs);
 
   void allocate();
+  void estimate_longest_bond();
 
  private:
   double *records;

@@ -42,6 +42,7 @@ FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
 
   restart_peratom = 1;
   comm_forward = 4;
+  maxexchange = atom->bond_per_atom * NSLOT;
   // under KOKKOS: syncs only the orientations, itself (send_orientations)
   datamask_read = EMPTY_MASK;
   datamask_modify = EMPTY_MASK;
@@ -252,51 +253,69 @@ void FixBeamState::copy_arrays(int i, int j, int /*delflag*/)
   memcpy(state[j], state[i], maxbond * NSLOT * sizeof(double));
 }
 
+/* ----------------------------------------------------------------------
+   all slots travel with an atom, the live ones and those beyond the bond
+   count (a bond that delete_bonds moved leaves its state there until the
+   bond style sees it again)
+------------------------------------------------------------------------- */
+
 int FixBeamState::pack_exchange(int i, double *buf)
 {
-  const int n = atom->num_bond[i] * NSLOT;
-  buf[0] = atom->num_bond[i];
-  memcpy(buf + 1, state[i], n * sizeof(double));
-  return n + 1;
+  memcpy(buf, state[i], maxbond * NSLOT * sizeof(double));
+  return maxbond * NSLOT;
 }
 
 int FixBeamState::unpack_exchange(int nlocal, double *buf)
 {
-  const int nbond = static_cast<int>(buf[0]);
-  memset(state[nlocal], 0, maxbond * NSLOT * sizeof(double));
-  memcpy(state[nlocal], buf + 1, nbond * NSLOT * sizeof(double));
-  return nbond * NSLOT + 1;
+  memcpy(state[nlocal], buf, maxbond * NSLOT * sizeof(double));
+  return maxbond * NSLOT;
 }
 
 /* ----------------------------------------------------------------------
-   restart record of an atom: its length, the bond count, the slots
+   restart record of an atom: its length, the number of slots, the slots
 ------------------------------------------------------------------------- */
 
 int FixBeamState::pack_restart(int i, double *buf)
 {
-  const int n = atom->num_bond[i] * NSLOT;
+  const int n = maxbond * NSLOT;
   buf[0] = n + 2;
-  buf[1] = atom->num_bond[i];
+  buf[1] = maxbond;
   memcpy(buf + 2, state[i], n * sizeof(double));
   return n + 2;
 }
+
+/* ----------------------------------------------------------------------
+   the fix is made at the first run after read_restart: the records are
+   still in the order of the atoms read, unless a command moved atoms in
+   between (LAMMPS keeps the records in place): checked against the bonds
+------------------------------------------------------------------------- */
 
 void FixBeamState::unpack_restart(int nlocal, int nth)
 {
   double **extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  const int nbond = static_cast<int>(extra[nlocal][m + 1]);
-  if (nbond > maxbond)
-    error->one(FLERR, "Fix BEAM_STATE: a restart record has {} bonds, more than the {} per atom",
-               nbond, maxbond);
+  const double *record = &extra[nlocal][m];
+  const int nslot = static_cast<int>(record[1]);
+  bool valid = static_cast<int>(record[0]) == nslot * NSLOT + 2 && nslot == maxbond;
   memset(state[nlocal], 0, maxbond * NSLOT * sizeof(double));
-  memcpy(state[nlocal], &extra[nlocal][m + 2], nbond * NSLOT * sizeof(double));
+  if (valid) memcpy(state[nlocal], record + 2, maxbond * NSLOT * sizeof(double));
+  // a live slot holds its bond's partner, or nothing yet
+  for (int b = 0; valid && b < atom->num_bond[nlocal]; b++) {
+    const double partner = state[nlocal][b * NSLOT + SLOT_PARTNER];
+    if (partner != 0.0 && partner != static_cast<double>(atom->bond_atom[nlocal][b])) valid = false;
+  }
+  if (!valid)
+    error->one(FLERR,
+               "Fix BEAM_STATE: the restart record of atom {} does not match its bonds (define "
+               "the run, which restores the beams' reference states, before commands that add, "
+               "delete or move atoms after read_restart)",
+               atom->tag[nlocal]);
 }
 
-int FixBeamState::size_restart(int nlocal)
+int FixBeamState::size_restart(int /*nlocal*/)
 {
-  return atom->num_bond[nlocal] * NSLOT + 2;
+  return maxbond * NSLOT + 2;
 }
 
 int FixBeamState::maxsize_restart()

@@ -573,12 +573,12 @@ E_, A_, I_, L_ = 100.0, 0.1, 0.001, 1.0
 SIGMA0, TAU0, FIBRE, PHI = 0.2, 0.1, 0.05, 30.0
 
 
-def threshold_probe(build, directory, coeff_words, move, below, above):
+def threshold_probe(build, directory, coeff_words, move, below, above, reverse=False):
     """Two particles (the first one at the origin), bonded along x; `move`
     takes a value and gives the commands that deform the bond to it.  The
     bond must hold at `below` and break at `above`; returns the bond counts."""
-    data = beam_data(directory / "pair.data", [(0.0, 0.0), (L_, 0.0)], [(0, 1)],
-                     ((-2, 3), (-2, 2)))
+    data = beam_data(directory / "pair.data", [(0.0, 0.0), (L_, 0.0)],
+                     [(1, 0) if reverse else (0, 1)], ((-2, 3), (-2, 2)))
     script = header(data) + f"""
 bond_style      beam
 bond_coeff      1 {E_} {A_} {I_} {coeff_words}
@@ -605,11 +605,12 @@ def squeeze_and_turn(u, theta):
     return lambda t: f"set atom 2 x {L_ - u:.17g}\n" + turn(t)
 
 
-def test_tension_breaks_at_sigma0(build, tmp_path):
+@pytest.mark.parametrize("stored_by", ["lower", "higher"])
+def test_tension_breaks_at_sigma0(build, tmp_path, stored_by):
     u_star = SIGMA0 * L_ / E_    # N / A = E u / L0
     # (pull moves the end by its argument: the second step adds 2e-9 u*)
     counts = threshold_probe(build, tmp_path, f"break {SIGMA0} {TAU0}", pull,
-                             u_star * (1 - 1e-9), u_star * 2e-9)
+                             u_star * (1 - 1e-9), u_star * 2e-9, reverse=stored_by == "higher")
     assert counts == [1, 0]
 
 
@@ -703,6 +704,17 @@ dump_modify     d format float %.17g
 """
 
 
+WRITE_FINAL = "write_data final.data\n"
+
+
+def bonds_in_data(path):
+    """The bond count of a data file's header and the lines of its Bonds section."""
+    text = path.read_text()
+    header = int(re.search(r"^(\d+) bonds$", text, re.M).group(1))
+    section = text[text.index("\nBonds") + 1:].split("\n\n")[1]
+    return header, len([line for line in section.splitlines() if line.strip()])
+
+
 def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail=""):
     nx, ny = 14, 4
     sites = []
@@ -711,7 +723,9 @@ def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail=""):
             sites.append((i + 0.5 * (j % 2), j * SQRT3 / 2))
     sites = np.array(sites)
     d = np.hypot(sites[:, None, 0] - sites[None, :, 0], sites[:, None, 1] - sites[None, :, 1])
-    bonds = [(a, b) for a in range(len(sites)) for b in range(a + 1, len(sites)) if d[a, b] < 1.01]
+    # each bond stored by its higher-ID atom (the count of broken bonds must
+    # not depend on which atom holds a bond)
+    bonds = [(b, a) for a in range(len(sites)) for b in range(a + 1, len(sites)) if d[a, b] < 1.01]
     data = beam_data(directory / "strip.data", sites, bonds, ((-1, 16), (-1, 8)))
     script = header(data, newton=newton) + f"""
 bond_style      beam
@@ -720,9 +734,14 @@ variable        left atom x<0.4
 variable        right atom x>{nx - 1.1}
 group           left variable left
 group           right variable right
-""" + STRIP_DYNAMICS.format(every=2000) + (tail or "run 2000\n")
+""" + STRIP_DYNAMICS.format(every=2000) + (tail or "run 2000\n" + WRITE_FINAL)
     build.run(script, directory, nprocs=nprocs, extra_args=extra_args)
-    return mcatest.read_thermo(directory / "log.lammps"), read_dump(directory / "strip.dump")
+    thermo = mcatest.read_thermo(directory / "log.lammps")
+    if (directory / "final.data").exists():
+        # thermo's count (atom->nbonds, lowered when bonds break) is the bonds left
+        header_count, listed = bonds_in_data(directory / "final.data")
+        assert header_count == listed == int(thermo["Bonds"][-1])
+    return thermo, read_dump(directory / "strip.dump")
 
 
 def compare_strips(ref, other, name):
@@ -751,10 +770,12 @@ units           lj
 dimension       2
 read_restart    half.restart
 comm_modify     cutoff 2.5
-""" + STRIP_DYNAMICS.format(every=1000) + "run 1000\n"
+""" + STRIP_DYNAMICS.format(every=1000) + "run 1000\n" + WRITE_FINAL
     build.run(restart, tmp_path / "split")
+    header_count, listed = bonds_in_data(tmp_path / "split" / "final.data")
     resumed = (mcatest.read_thermo(tmp_path / "split" / "log.lammps"),
                read_dump(tmp_path / "split" / "strip.dump"))
+    assert header_count == listed == int(resumed[0]["Bonds"][-1])
     compare_strips(ref, resumed, "restart at step 1000")
 
 
