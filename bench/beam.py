@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Cost of bond_style beam: microseconds per bond-step on a periodic 2-D
 hexagonal lattice (in.beam: 2 nx ny particles, 3 bonds each, NVE at a small
-temperature) against LAMMPS's bond_style bpm/rotational on the same
+temperature), or with --dim 3 an fcc lattice (4 n^3 particles, 6 bonds
+each; --nx is n), against LAMMPS's bond_style bpm/rotational on the same
 lattice (the build with the BPM package: LAMMPS 2026, "current"), and the
 kk variant on 1 and 2 threads (the build with KOKKOS).  Reported: the
 Bond section and the whole step per bond-step, best of --repeat runs.
@@ -9,6 +10,7 @@ Bond section and the whole step per bond-step, best of --repeat runs.
     eval "$(tools/mca env current)"; eval "$(tools/mca env kokkos)"
     /usr/bin/python3 bench/beam.py [--nx 200 --ny 100] [--steps 200] [--repeat 3]
         [--out bench/results/beam.md]
+    /usr/bin/python3 bench/beam.py --dim 3 --nx 20 --steps 100 [--out bench/results/beam3d.md]
 """
 import argparse
 import os
@@ -26,23 +28,30 @@ CASES = (("current cpu", "MCA_BUILD_CURRENT", "beam", ()),
          ("kokkos kk 2 threads", "MCA_BUILD_KOKKOS", "beam", ("-k", "on", "t", "2", "-sf", "kk")))
 
 
+def bonds_per_atom(args):
+    return 3 if args.dim == 2 else 6
+
+
 def run_once(case, args, outdir):
     label, build, style, switches = case
     lmp = os.path.join(os.environ[build], "lmp")
     log = os.path.join(outdir, f"log.{style}.{label.replace(' ', '_')}")
-    cmd = [lmp, "-in", os.path.join(HERE, "in.beam"), "-var", "style", style, "-var", "nx",
-           str(args.nx), "-var", "ny", str(args.ny), "-var", "nsteps", str(args.steps),
-           "-log", log, "-screen", "none"] + list(switches)
+    ny, nz = (args.ny, 1) if args.dim == 2 else (args.nx, args.nx)
+    cmd = [lmp, "-in", os.path.join(HERE, "in.beam"), "-var", "style", style, "-var", "dim",
+           str(args.dim), "-var", "nx", str(args.nx), "-var", "ny", str(ny), "-var", "nz",
+           str(nz), "-var", "nsteps", str(args.steps), "-log", log, "-screen", "none"]
+    cmd += list(switches)
     threads = "2" if "2 threads" in label else "1"
     env = dict(os.environ, OMP_NUM_THREADS=threads, OMP_PROC_BIND="false")
     subprocess.run(cmd, cwd=outdir, env=env, check=True)
     result = parse_log(open(log).read())
-    per = 1e6 / (3 * result["atoms"] * result["steps"])
+    per = 1e6 / (bonds_per_atom(args) * result["atoms"] * result["steps"])
     return {"step": result["seconds"] * per, "bond": result["sections"].get("Bond", 0.0) * per}
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--dim", type=int, choices=(2, 3), default=2)
     ap.add_argument("--nx", type=int, default=200)
     ap.add_argument("--ny", type=int, default=100)
     ap.add_argument("--steps", type=int, default=200)
@@ -54,8 +63,10 @@ def main():
         for _ in range(args.repeat):
             for case in CASES:
                 runs.setdefault(case, []).append(run_once(case, args, outdir))
-    nbonds = 3 * 2 * args.nx * args.ny
-    lines = [f"hexagonal lattice of {2 * args.nx * args.ny} particles and {nbonds} bonds, "
+    natoms = 2 * args.nx * args.ny if args.dim == 2 else 4 * args.nx ** 3
+    nbonds = bonds_per_atom(args) * natoms
+    kind = "hexagonal" if args.dim == 2 else "fcc"
+    lines = [f"{kind} lattice of {natoms} particles and {nbonds} bonds, "
              f"{args.steps} steps, best of {args.repeat}; us per bond-step", "",
              "| build, mode | bond style | Bond | whole step | Bond / beam current cpu |",
              "|---|---|---|---|---|"]

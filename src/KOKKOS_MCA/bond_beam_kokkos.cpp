@@ -18,6 +18,7 @@
 #include "atom_kokkos.h"
 #include "atom_masks.h"
 #include "atom_vec_mca_kokkos.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_beam_state.h"
 #include "force.h"
@@ -37,8 +38,8 @@ template <class View>
 using atomic_view = Kokkos::View<typename View::data_type, typename View::array_layout,
                                  typename View::device_type, Kokkos::MemoryTraits<Kokkos::Atomic>>;
 
-// the force kernel: one bond per call (BondBeam::compute)
-template <class DeviceType> struct BeamForceKernel {
+// the force kernel: one bond per call (BondBeam::evaluate)
+template <class DeviceType, int DIM> struct BeamForceKernel {
   template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
   view<decltype(AtomKokkos::k_x)> x;
   atomic_view<view<decltype(AtomKokkos::k_f)>> f;
@@ -61,12 +62,15 @@ template <class DeviceType> struct BeamForceKernel {
     const bool swap = records(n, BondBeam::REC_SWAP) != 0.0;
     const int i = swap ? bondlist(n, 1) : bondlist(n, 0);
     const int j = swap ? bondlist(n, 0) : bondlist(n, 1);
-    const double ref[NREF] = {records(n, REF_L0), records(n, REF_BI), records(n, REF_BJ)};
-    const BeamCoeff &c = coeff(type);
-    const double dx = x(j, 0) - x(i, 0), dy = x(j, 1) - x(i, 1);
-    const BeamForce out = beam_force_2d(c, ref, dx, dy, planar_angle(quat(i, 0), quat(i, 3)),
-                                        planar_angle(quat(j, 0), quat(j, 3)));
-    if (c.breakable && break_measure(c, out, records(n, BondBeam::REC_STRENGTH)) >= 1.0) {
+    constexpr int NVALUES = (DIM == 3) ? NREF_3D : NREF_2D;
+    double ref[NVALUES];
+    for (int k = 0; k < NVALUES; k++) ref[k] = records(n, BondBeam::REC_REF + k);
+    const double qi[4] = {quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3)};
+    const double qj[4] = {quat(j, 0), quat(j, 1), quat(j, 2), quat(j, 3)};
+    const double d[3] = {x(j, 0) - x(i, 0), x(j, 1) - x(i, 1), DIM == 3 ? x(j, 2) - x(i, 2) : 0.0};
+    const BeamBond out =
+        beam_bond<DIM>(coeff(type), ref, d, qi, qj, records(n, BondBeam::REC_STRENGTH));
+    if (out.measure >= 1.0) {
       records(n, BondBeam::REC_STRENGTH) = -1.0;
       const int k = Kokkos::atomic_fetch_add(&nbroken(), 1);
       if (k < (int) broken.extent(0)) {
@@ -78,24 +82,35 @@ template <class DeviceType> struct BeamForceKernel {
     }
     const bool own_i = newton_bond || i < nlocal, own_j = newton_bond || j < nlocal;
     if (own_i) {
-      f(i, 0) -= out.fx;
-      f(i, 1) -= out.fy;
-      torque(i, 2) += out.ti;
+      f(i, 0) -= out.f[0];
+      f(i, 1) -= out.f[1];
+      if (DIM == 3) {
+        f(i, 2) -= out.f[2];
+        torque(i, 0) += out.ti[0];
+        torque(i, 1) += out.ti[1];
+      }
+      torque(i, 2) += out.ti[2];
     }
     if (own_j) {
-      f(j, 0) += out.fx;
-      f(j, 1) += out.fy;
-      torque(j, 2) += out.tj;
+      f(j, 0) += out.f[0];
+      f(j, 1) += out.f[1];
+      if (DIM == 3) {
+        f(j, 2) += out.f[2];
+        torque(j, 0) += out.tj[0];
+        torque(j, 1) += out.tj[1];
+      }
+      torque(j, 2) += out.tj[2];
     }
     // BondBeam::tally
-    const double share = newton_bond ? 1.0 : 0.5 * ((i < nlocal) + (j < nlocal));
+    const double share = bond_share(newton_bond, i, j, nlocal);
     if (eflag_global) ev.evdwl += share * out.energy;
     if (eflag_atom) {
       if (own_i) eatom(i) += 0.5 * out.energy;
       if (own_j) eatom(j) += 0.5 * out.energy;
     }
     if (vflag_global || vflag_atom) {
-      const double v[6] = {dx * out.fx, dy * out.fy, 0.0, dx * out.fy, 0.0, 0.0};
+      double v[6];
+      virial_terms(d, out.f, v);
       if (vflag_global)
         for (int k = 0; k < 6; k++) ev.v[k] += share * v[k];
       if (vflag_atom)
@@ -167,7 +182,7 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     neighborKK->k_bondlist.sync_host();
     auto list = neighborKK->k_bondlist.view_host();
     if ((int) k_records.extent(0) < nlist)
-      k_records = MCAKokkos::dual_double_2d("bond:beam_records", nlist + nlist / 4 + 16, NREC);
+      k_records = MCAKokkos::dual_double_2d("bond:beam_records", nlist + nlist / 4 + 16, nrec);
     fill_records(nlist, list.data(), (long) list.stride(0), (long) list.stride(1),
                  k_records.view_host().data());
     k_records.modify_host();
@@ -177,7 +192,46 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
   atomKK->sync(execution_space, datamask_read | MCA_QUAT_MASK);
   atomKK->modified(execution_space, datamask_modify);
 
-  BeamForceKernel<DeviceType> kernel;
+  if (domain->dimension == 3)
+    launch<3>(nlist, neighborKK);
+  else
+    launch<2>(nlist, neighborKK);
+  tally.to_host<DeviceType>(eflag_atom, vflag_atom);
+
+  // broken bonds leave the bond arrays on the host (on the device their
+  // records say so until the list is built again); in the order of the
+  // list entries, as the CPU style removes them, whatever order the
+  // threads found them in
+  if (breaking) {
+    int nbroken = 0;
+    Kokkos::deep_copy(nbroken, d_nbroken);
+    std::vector<int> pairs;
+    if (nbroken) {
+      auto found = Kokkos::create_mirror_view(d_broken);
+      Kokkos::deep_copy(found, d_broken);
+      std::vector<std::array<int, 3>> entries(nbroken);
+      for (int k = 0; k < nbroken; k++) entries[k] = {found(k, 2), found(k, 0), found(k, 1)};
+      std::sort(entries.begin(), entries.end());
+      for (const auto &e : entries) {
+        pairs.push_back(e[1]);
+        pairs.push_back(e[2]);
+      }
+      atomKK->sync(Host, TAG_MASK | BOND_MASK);
+    }
+    remove_broken(nbroken, pairs.data());
+    if (nbroken) atomKK->modified(Host, BOND_MASK);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the force kernel over the bond list, for beams of dimension DIM
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+template <int DIM>
+void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
+{
+  BeamForceKernel<DeviceType, DIM> kernel;
   kernel.x = atomKK->k_x.template view<DeviceType>();
   kernel.f = atomKK->k_f.template view<DeviceType>();
   kernel.torque = atomKK->k_torque.template view<DeviceType>();
@@ -215,31 +269,6 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
   if (eflag_global) energy += ev.evdwl;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += ev.v[k];
-  tally.to_host<DeviceType>(eflag_atom, vflag_atom);
-
-  // broken bonds leave the bond arrays on the host (on the device their
-  // records say so until the list is built again); in the order of the
-  // list entries, as the CPU style removes them, whatever order the
-  // threads found them in
-  if (breaking) {
-    int nbroken = 0;
-    Kokkos::deep_copy(nbroken, d_nbroken);
-    std::vector<int> pairs;
-    if (nbroken) {
-      auto found = Kokkos::create_mirror_view(d_broken);
-      Kokkos::deep_copy(found, d_broken);
-      std::vector<std::array<int, 3>> entries(nbroken);
-      for (int k = 0; k < nbroken; k++) entries[k] = {found(k, 2), found(k, 0), found(k, 1)};
-      std::sort(entries.begin(), entries.end());
-      for (const auto &e : entries) {
-        pairs.push_back(e[1]);
-        pairs.push_back(e[2]);
-      }
-      atomKK->sync(Host, TAG_MASK | BOND_MASK);
-    }
-    remove_broken(nbroken, pairs.data());
-    if (nbroken) atomKK->modified(Host, BOND_MASK);
-  }
 }
 
 namespace LAMMPS_NS {

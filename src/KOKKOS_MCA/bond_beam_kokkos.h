@@ -29,9 +29,10 @@ namespace LAMMPS_NS {
 
 /* ----------------------------------------------------------------------
    bond_style beam/kk: bond_style beam as one Kokkos kernel over the bond
-   list, calling the same element (beam_kernels.h).  Forces and torques
-   are added atomically (a bond adds to two atoms); the reference states
-   of the listed bonds go to the device when the list is built again
+   list (an instance per dimension), calling the same element
+   (beam_kernels.h).  Forces and torques are added atomically (a bond adds
+   to two atoms); the reference states of the listed bonds go to the
+   device when the list is built again
 ------------------------------------------------------------------------- */
 
 template <class DeviceType>
@@ -50,6 +51,7 @@ class BondBeamKokkos : private MCAKokkos::RequiresKokkos, public BondBeam {
   Kokkos::View<BeamKernels::BeamCoeff *, DeviceType> d_coeff;
   MCAKokkos::int_2d<DeviceType> d_broken;
   Kokkos::View<int, DeviceType> d_nbroken;
+  template <int DIM> void launch(int nlist, class NeighborKokkos *neighborKK);
 };
 
 }    // namespace LAMMPS_NS

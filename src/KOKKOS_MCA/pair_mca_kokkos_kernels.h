@@ -23,6 +23,7 @@
 #define LMP_PAIR_MCA_KOKKOS_KERNELS_H
 
 #include "atom_kokkos.h"
+#include "mca_geometry.h"
 #include "mca_link_passes.h"
 #include "pair_mca_kokkos.h"
 
@@ -149,12 +150,7 @@ struct MCALinkSums {
 // in the order of Pair::ev_tally_xyz
 KOKKOS_INLINE_FUNCTION void pair_virial(const double *del, const double *f, double *v)
 {
-  v[0] = del[0] * f[0];
-  v[1] = del[1] * f[1];
-  v[2] = del[2] * f[2];
-  v[3] = del[0] * f[1];
-  v[4] = del[0] * f[2];
-  v[5] = del[1] * f[2];
+  MCAKernels::virial_terms(del, f, v);
 }
 
 /* ----------------------------------------------------------------------

@@ -37,17 +37,48 @@
    Timoshenko shear correction (0: Euler-Bernoulli).  The shear beam
    (MODEL_SPRINGS) is the same element with N = k_n u, M_i = k_r q_i,
    M_j = k_r q_j: E = k_n u^2 / 2 + k_r (q_i^2 + q_j^2) / 2.
+
+   3-D: the 12 x 12 frame element (axial EA/L0, torsion GJ/L0, bending
+   about the section's y and z axes with I_y and I_z) in the same total
+   co-rotational form.  The section's axes y, z, normal to the chord,
+   are fixed in each particle's body frame when the bond is first seen
+   (stored in both particles' frames: y_i, z_i, y_j, z_j, which coincide
+   at rest and under any rigid motion).  The ends' turns relative to the
+   chord e = d / L and the twist of j against i are measured by
+     about z:  a_i = -e.y_i,  a_j = -e.y_j;   about y:  c_i = e.z_i,  c_j = e.z_j;
+     twist:    p = (z_i.y_j - y_i.z_j) / 2,
+   the sines of the angles (the rotations themselves to second order), so
+     E = EA u^2 / (2 L0) + GJ p^2 / (2 L0)
+         + [own_z (a_i^2 + a_j^2) + 2 cross_z a_i a_j] / 2   (own, cross: as
+         + [own_y (c_i^2 + c_j^2) + 2 cross_y c_i c_j] / 2    in 2-D, I_z, I_y)
+   depends on dot products of vectors that turn together under a rigid
+   motion only (zero force for any rigid motion), its linearisation is the
+   12 x 12 element (nodally exact: a cantilever of any number of elements
+   gives PL^3/3EI), and forces and torques are its exact gradient: with
+   M_iz = dE/da_i etc., T = GJ p / L0 and g = dE/de,
+     g = -M_iz y_i - M_jz y_j + M_iy z_i + M_jy z_j,
+     force on j  -(N e + (g - (g.e) e) / L),  on i the opposite,
+     torque on i  M_iz y_i x e - M_iy z_i x e + T (y_i x z_j - z_i x y_j) / 2,
+     torque on j  M_jz y_j x e - M_jy z_j x e - T (y_j x z_i - z_j x y_i) / 2
+   (a turn w of a body changes its axes by w x y, w x z: the torque is
+   minus the sum of axis x dE/d(axis)).  In a planar motion the 3-D element
+   is the 2-D one with sin q in place of q (they agree to second order).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_BEAM_KERNELS_H
 #define LMP_BEAM_KERNELS_H
 
+#include "mca_geometry.h"
 #include "mca_inline.h"
 
 #include <cmath>
 
 namespace LAMMPS_NS {
 namespace BeamKernels {
+
+  using MCAKernels::cross3;
+  using MCAKernels::dot3;
+  using MCAKernels::virial_terms;    // of a bond: its force on j, d = x_j - x_i
 
   enum BeamScatter { SCATTER_NONE = 0, SCATTER_UNIFORM = 1, SCATTER_WEIBULL = 2 };
 
@@ -58,33 +89,63 @@ namespace BeamKernels {
 
   // the section and strength of one bond type (plain record: copied to a device)
   struct BeamCoeff {
-    int model;         // BeamModel
-    double kn, kr;     // springs: normal and rotational stiffness
-    double E, A, I;    // Young's modulus, area, second moment of area (springs: A = I = 1)
-    double G, ks;      // shear modulus and shear coefficient (G = 0: Euler-Bernoulli)
-    double EA, EI;
-    double shear;      // 12 EI / (ks G A): Phi = shear / L0^2
-    int breakable;     // 1: the elliptic criterion below
-    int mohr;          // 1: Mohr-Coulomb branch in compression
-    double sigma0;     // tensile strength
-    double tau0;       // shear strength
-    double fibre;      // distance of the outer fibre (0: no bending stress)
-    double tan_phi;    // friction of the Mohr-Coulomb branch
-    double phi_deg;    // its angle as given (degrees)
-    int scatter;       // BeamScatter of the strengths from bond to bond
+    int model;           // BeamModel
+    double kn, kr;       // springs: normal and rotational stiffness
+    double kt;           // springs in 3-D: torsional stiffness
+    double E, A, I;      // Young's modulus, area, second moment of area (springs: A = I = 1)
+    double Iy, Iz, J;    // 3-D section: bending about its y and z axes, torsion
+    double G, ks;        // shear modulus; shear coefficient (0: Euler-Bernoulli)
+    double nu;           // Poisson's ratio when G was given as E / (2 (1 + nu))
+    int G_from_nu;
+    double EA, EI, EIy, EIz, GJ;
+    double shear, shear_y, shear_z;    // 12 EI / (ks G A): Phi = shear / L0^2
+    int breakable;                     // 1: the elliptic criterion below
+    int mohr;                          // 1: Mohr-Coulomb branch in compression
+    double sigma0;                     // tensile strength
+    double tau0;                       // shear strength
+    double fibre;                      // distance of the outer fibre (0: no bending stress)
+    double tan_phi;                    // friction of the Mohr-Coulomb branch
+    double phi_deg;                    // its angle as given (degrees)
+    int scatter;                       // BeamScatter of the strengths from bond to bond
     int seed;
     double scatter_width;    // uniform: half width; Weibull: modulus m
   };
 
-  // the reference state of a bond, in the order of the particle that stores it
-  enum { REF_L0, REF_BI, REF_BJ, NREF };
+  // the reference state of a bond, in the order lower atom ID first.
+  // 2-D: L0 and the chord direction seen from each particle; 3-D: L0 and
+  // the section's y and z axes in each particle's body frame
+  enum {
+    REF_L0 = 0,
+    REF_BI = 1,    // 2-D
+    REF_BJ = 2,
+    NREF_2D = 3,
+    REF_YI = 1,    // 3-D
+    REF_ZI = 4,
+    REF_YJ = 7,
+    REF_ZJ = 10,
+    NREF_3D = 13
+  };
 
-  // what the element gives
+  MCA_INLINE int nref(const int dimension)
+  {
+    return dimension == 3 ? NREF_3D : NREF_2D;
+  }
+
+  // what the 2-D element gives
   struct BeamForce {
     double fx, fy;          // force on j (on i: the opposite)
     double ti, tj;          // torques (about z) on i and on j
     double energy;          // elastic energy of the element
     double N, V, Mi, Mj;    // axial and shear force, end moments
+  };
+
+  // what the 3-D element gives
+  struct BeamForce3D {
+    double f[3];            // force on j (on i: the opposite)
+    double ti[3], tj[3];    // torques on i and on j
+    double energy;          // elastic energy of the element
+    double N, V, T;         // axial force, size of the shear force, twisting moment
+    double bend;            // the larger end's sqrt((M_y / I_y)^2 + (M_z / I_z)^2)
   };
 
   MCA_INLINE double wrap_angle(double a)
@@ -98,11 +159,34 @@ namespace BeamKernels {
     return 2.0 * atan2(z, w);
   }
 
+  // v from a particle's body frame to space (q: body to space), and back
+  MCA_INLINE void to_space(const double *q, const double *v, double *out)
+  {
+    // v + 2 w (u x v) + 2 u x (u x v), u = (q1, q2, q3)
+    const double t0 = 2.0 * (q[2] * v[2] - q[3] * v[1]);
+    const double t1 = 2.0 * (q[3] * v[0] - q[1] * v[2]);
+    const double t2 = 2.0 * (q[1] * v[1] - q[2] * v[0]);
+    out[0] = v[0] + q[0] * t0 + q[2] * t2 - q[3] * t1;
+    out[1] = v[1] + q[0] * t1 + q[3] * t0 - q[1] * t2;
+    out[2] = v[2] + q[0] * t2 + q[1] * t1 - q[2] * t0;
+  }
+
+  MCA_INLINE void to_body(const double *q, const double *v, double *out)
+  {
+    const double conj[4] = {q[0], -q[1], -q[2], -q[3]};
+    to_space(conj, v, out);
+  }
+
   MCA_INLINE void set_coeff(BeamCoeff &c)
   {
     c.EA = c.E * c.A;
     c.EI = c.E * c.I;
-    c.shear = (c.G > 0.0) ? 12.0 * c.EI / (c.ks * c.G * c.A) : 0.0;
+    c.EIy = c.E * c.Iy;
+    c.EIz = c.E * c.Iz;
+    c.GJ = c.G * c.J;
+    c.shear = (c.ks > 0.0) ? 12.0 * c.EI / (c.ks * c.G * c.A) : 0.0;
+    c.shear_y = (c.ks > 0.0) ? 12.0 * c.EIy / (c.ks * c.G * c.A) : 0.0;
+    c.shear_z = (c.ks > 0.0) ? 12.0 * c.EIz / (c.ks * c.G * c.A) : 0.0;
   }
 
   // the reference state of a bond from the present geometry (stress-free)
@@ -115,22 +199,54 @@ namespace BeamKernels {
     ref[REF_BJ] = wrap_angle(a - tj);
   }
 
-  // the stiffness of a bond of reference length L0: N = axial u,
-  // M_i = own q_i + cross q_j, M_j = cross q_i + own q_j
-  MCA_INLINE void end_stiffness(const BeamCoeff &c, const double L0, double &axial, double &own,
-                                double &cross)
+  // 3-D: the section's z axis is particle i's body z axis (its x axis if
+  // the bond runs along z) made normal to the chord, y = z x e
+  MCA_INLINE void reference_state_3d(const double *d, const double *qi, const double *qj,
+                                     double *ref)
+  {
+    const double L = sqrt(dot3(d, d));
+    const double e[3] = {d[0] / L, d[1] / L, d[2] / L};
+    const double body_z[3] = {0.0, 0.0, 1.0}, body_x[3] = {1.0, 0.0, 0.0};
+    double axis[3], z[3], y[3];
+    to_space(qi, body_z, axis);
+    double along = dot3(axis, e);
+    for (int k = 0; k < 3; k++) z[k] = axis[k] - along * e[k];
+    double size = sqrt(dot3(z, z));
+    if (size < 1.0e-6) {
+      to_space(qi, body_x, axis);
+      along = dot3(axis, e);
+      for (int k = 0; k < 3; k++) z[k] = axis[k] - along * e[k];
+      size = sqrt(dot3(z, z));
+    }
+    for (int k = 0; k < 3; k++) z[k] /= size;
+    cross3(z, e, y);
+    ref[REF_L0] = L;
+    to_body(qi, y, ref + REF_YI);
+    to_body(qi, z, ref + REF_ZI);
+    to_body(qj, y, ref + REF_YJ);
+    to_body(qj, z, ref + REF_ZJ);
+  }
+
+  // the bending stiffness of a bond of reference length L0 in one plane
+  // (EI, shear = 12 EI / (ks G A)): M_i = own q_i + cross q_j,
+  // M_j = cross q_i + own q_j; the shear beam: M = k_r q at each end
+  MCA_INLINE void bending_stiffness(const BeamCoeff &c, const double EI, const double shear,
+                                    const double L0, double &own, double &cross)
   {
     if (c.model == MODEL_SPRINGS) {
-      axial = c.kn;
       own = c.kr;
       cross = 0.0;
       return;
     }
-    const double phi = c.shear / (L0 * L0);
-    const double k = c.EI / (L0 * (1.0 + phi));
-    axial = c.EA / L0;
+    const double phi = shear / (L0 * L0);
+    const double k = EI / (L0 * (1.0 + phi));
     own = k * (4.0 + phi);
     cross = k * (2.0 - phi);
+  }
+
+  MCA_INLINE double axial_stiffness(const BeamCoeff &c, const double L0)
+  {
+    return (c.model == MODEL_SPRINGS) ? c.kn : c.EA / L0;
   }
 
   MCA_INLINE BeamForce beam_force_2d(const BeamCoeff &c, const double *ref, const double dx,
@@ -144,8 +260,9 @@ namespace BeamKernels {
     const double qi = wrap_angle(ti + ref[REF_BI] - a);
     const double qj = wrap_angle(tj + ref[REF_BJ] - a);
     const double u = L - L0;
-    double axial, own, cross;
-    end_stiffness(c, L0, axial, own, cross);
+    const double axial = axial_stiffness(c, L0);
+    double own, cross;
+    bending_stiffness(c, c.EI, c.shear, L0, own, cross);
     out.Mi = own * qi + cross * qj;
     out.Mj = cross * qi + own * qj;
     out.N = axial * u;
@@ -159,20 +276,75 @@ namespace BeamKernels {
     return out;
   }
 
+  MCA_INLINE BeamForce3D beam_force_3d(const BeamCoeff &c, const double *ref, const double *d,
+                                       const double *qi, const double *qj)
+  {
+    BeamForce3D out;
+    const double L0 = ref[REF_L0];
+    const double L = sqrt(dot3(d, d));
+    const double e[3] = {d[0] / L, d[1] / L, d[2] / L};
+    double yi[3], zi[3], yj[3], zj[3];
+    to_space(qi, ref + REF_YI, yi);
+    to_space(qi, ref + REF_ZI, zi);
+    to_space(qj, ref + REF_YJ, yj);
+    to_space(qj, ref + REF_ZJ, zj);
+    const double ai = -dot3(e, yi), aj = -dot3(e, yj);       // turns about z
+    const double ci = dot3(e, zi), cj = dot3(e, zj);         // turns about y
+    const double p = 0.5 * (dot3(zi, yj) - dot3(yi, zj));    // twist of j against i
+    const double u = L - L0;
+    double own_z, cross_z, own_y, cross_y;
+    bending_stiffness(c, c.EIz, c.shear_z, L0, own_z, cross_z);
+    bending_stiffness(c, c.EIy, c.shear_y, L0, own_y, cross_y);
+    const double Miz = own_z * ai + cross_z * aj, Mjz = cross_z * ai + own_z * aj;
+    const double Miy = own_y * ci + cross_y * cj, Mjy = cross_y * ci + own_y * cj;
+    out.N = axial_stiffness(c, L0) * u;
+    out.T = ((c.model == MODEL_SPRINGS) ? c.kt : c.GJ / L0) * p;
+    out.energy = 0.5 * (out.N * u + ai * Miz + aj * Mjz + ci * Miy + cj * Mjy + p * out.T);
+
+    double g[3], shear[3];
+    for (int k = 0; k < 3; k++) g[k] = -Miz * yi[k] - Mjz * yj[k] + Miy * zi[k] + Mjy * zj[k];
+    const double ge = dot3(g, e);
+    for (int k = 0; k < 3; k++) {
+      shear[k] = (g[k] - ge * e[k]) / L;
+      out.f[k] = -(out.N * e[k] + shear[k]);
+    }
+    out.V = sqrt(dot3(shear, shear));
+
+    double ye[3], ze[3], yz[3], zy[3];
+    cross3(yi, e, ye);
+    cross3(zi, e, ze);
+    cross3(yi, zj, yz);
+    cross3(zi, yj, zy);
+    for (int k = 0; k < 3; k++)
+      out.ti[k] = Miz * ye[k] - Miy * ze[k] + 0.5 * out.T * (yz[k] - zy[k]);
+    cross3(yj, e, ye);
+    cross3(zj, e, ze);
+    cross3(yj, zi, yz);
+    cross3(zj, yi, zy);
+    for (int k = 0; k < 3; k++)
+      out.tj[k] = Mjz * ye[k] - Mjy * ze[k] - 0.5 * out.T * (yz[k] - zy[k]);
+
+    const double bi = sqrt((Miy / c.Iy) * (Miy / c.Iy) + (Miz / c.Iz) * (Miz / c.Iz));
+    const double bj = sqrt((Mjy / c.Iy) * (Mjy / c.Iy) + (Mjz / c.Iz) * (Mjz / c.Iz));
+    out.bend = bi > bj ? bi : bj;
+    return out;
+  }
+
   /* --------------------------------------------------------------------
      breaking (digest A.5): the elliptic criterion
        (sigma / sigma0)^2 + (tau / tau0)^2 >= 1,
-     sigma = N / A + fibre max(|M_i|, |M_j|) / I (the most stretched fibre),
-     tau = |V| / A; in tension only (sigma < 0 counts as 0), or with the
-     Mohr-Coulomb branch: in compression tau0 grows to tau0 - sigma tan(phi)
-     and sigma drops out.  strength: the bond's factor on sigma0 and tau0
+     2-D: sigma = N / A + fibre max(|M_i|, |M_j|) / I (the most stretched
+     fibre), tau = |V| / A; 3-D: sigma = N / A + fibre max over the ends of
+     sqrt((M_y / I_y)^2 + (M_z / I_z)^2) (exact for a round section),
+     tau = |V| / A + fibre |T| / J (the torsional stress at the rim).  In
+     tension only (sigma < 0 counts as 0), or with the Mohr-Coulomb branch:
+     in compression tau0 grows to tau0 - sigma tan(phi) and sigma drops
+     out.  strength: the bond's factor on sigma0 and tau0
   -------------------------------------------------------------------- */
 
-  MCA_INLINE double break_measure(const BeamCoeff &c, const BeamForce &f, const double strength)
+  MCA_INLINE double elliptic_measure(const BeamCoeff &c, const double sigma, const double tau,
+                                     const double strength)
   {
-    const double mi = fabs(f.Mi), mj = fabs(f.Mj);
-    const double sigma = f.N / c.A + c.fibre * (mi > mj ? mi : mj) / c.I;
-    const double tau = fabs(f.V) / c.A;
     const double s0 = strength * c.sigma0, t0 = strength * c.tau0;
     if (sigma < 0.0 && c.mohr) {
       const double t = tau / (t0 - sigma * c.tan_phi);
@@ -180,6 +352,68 @@ namespace BeamKernels {
     }
     const double s = (sigma > 0.0 ? sigma : 0.0) / s0, t = tau / t0;
     return s * s + t * t;
+  }
+
+  MCA_INLINE double break_measure(const BeamCoeff &c, const BeamForce &f, const double strength)
+  {
+    const double mi = fabs(f.Mi), mj = fabs(f.Mj);
+    const double sigma = f.N / c.A + c.fibre * (mi > mj ? mi : mj) / c.I;
+    const double tau = fabs(f.V) / c.A;
+    return elliptic_measure(c, sigma, tau, strength);
+  }
+
+  MCA_INLINE double break_measure(const BeamCoeff &c, const BeamForce3D &f, const double strength)
+  {
+    const double sigma = f.N / c.A + c.fibre * f.bend;
+    const double tau = f.V / c.A + c.fibre * fabs(f.T) / c.J;
+    return elliptic_measure(c, sigma, tau, strength);
+  }
+
+  /* --------------------------------------------------------------------
+     one bond of either dimension, particles i, j in the order of the
+     reference: force on j, torques, energy, and whether it breaks
+     (measure >= 1; 0 for a bond that cannot break)
+  -------------------------------------------------------------------- */
+
+  struct BeamBond {
+    double f[3], ti[3], tj[3];
+    double energy, measure;
+  };
+
+  template <int DIM>
+  MCA_INLINE BeamBond beam_bond(const BeamCoeff &c, const double *ref, const double *d,
+                                const double *qi, const double *qj, const double strength)
+  {
+    BeamBond b;
+    if (DIM == 2) {
+      const BeamForce out =
+          beam_force_2d(c, ref, d[0], d[1], planar_angle(qi[0], qi[3]), planar_angle(qj[0], qj[3]));
+      b.f[0] = out.fx;
+      b.f[1] = out.fy;
+      b.f[2] = 0.0;
+      b.ti[0] = b.ti[1] = b.tj[0] = b.tj[1] = 0.0;
+      b.ti[2] = out.ti;
+      b.tj[2] = out.tj;
+      b.energy = out.energy;
+      b.measure = c.breakable ? break_measure(c, out, strength) : 0.0;
+    } else {
+      const BeamForce3D out = beam_force_3d(c, ref, d, qi, qj);
+      for (int k = 0; k < 3; k++) {
+        b.f[k] = out.f[k];
+        b.ti[k] = out.ti[k];
+        b.tj[k] = out.tj[k];
+      }
+      b.energy = out.energy;
+      b.measure = c.breakable ? break_measure(c, out, strength) : 0.0;
+    }
+    return b;
+  }
+
+  // the share of a bond's energy and virial summed on this rank (LAMMPS's
+  // ev_tally): all with newton_bond, else half for each owned atom
+  MCA_INLINE double bond_share(const int newton_bond, const int i, const int j, const int nlocal)
+  {
+    return newton_bond ? 1.0 : 0.5 * ((i < nlocal) + (j < nlocal));
   }
 
   // the strength factor of the bond between atoms tag_lo < tag_hi: a

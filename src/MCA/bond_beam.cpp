@@ -42,8 +42,8 @@ static const char FIX_ID[] = "BEAM_STATE";
 /* ---------------------------------------------------------------------- */
 
 BondBeam::BondBeam(LAMMPS *_lmp) :
-    Bond(_lmp), coeffs(nullptr), fix_state(nullptr), L0_max(0.0), built_at(-1), built_n(0),
-    breaking(0), records(nullptr), maxrecords(0)
+    Bond(_lmp), coeffs(nullptr), fix_state(nullptr), L0_max(0.0), nrec(REC_REF + NREF_2D),
+    built_at(-1), built_n(0), breaking(0), records(nullptr), maxrecords(0)
 {
 }
 
@@ -80,9 +80,11 @@ void BondBeam::settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   bond_coeff N E A I [shear G ks] [break sigma0 tau0] [bending c]
+   bond_coeff N E A I [shear G ks] [poisson nu] [section Iy Iz J]
+                      [break sigma0 tau0] [bending c]
                       [mohr phi] [scatter uniform w seed | weibull m seed]
-   bond_coeff N shearbeam kn kr [break N0 V0] [mohr phi] [scatter ...]
+   bond_coeff N shearbeam kn kr [twist kt] [break N0 V0] [mohr phi] [scatter ...]
+   (3-D: a beam needs G, from shear or poisson; a shear beam needs twist)
 ------------------------------------------------------------------------- */
 
 void BondBeam::coeff(int narg, char **arg)
@@ -106,14 +108,26 @@ void BondBeam::coeff(int narg, char **arg)
     c.model = MODEL_SPRINGS;
     c.kn = positive("shearbeam kn", arg[2]);
     c.kr = positive("shearbeam kr", arg[3]);
-    c.A = c.I = 1.0;
+    c.A = c.I = c.Iy = c.Iz = c.J = 1.0;
   } else {
     c.model = MODEL_BEAM;
     c.E = positive("E", arg[1]);
     c.A = positive("A", arg[2]);
     c.I = positive("I", arg[3]);
+    // 3-D default: a round section
+    c.Iy = c.Iz = c.I;
+    c.J = 2.0 * c.I;
   }
-  bool bending = false, mohr = false;
+  const bool three_d = domain->dimension == 3;
+  auto only_3d = [&](const char *word) {
+    if (!three_d)
+      error->all(FLERR, "Bond_coeff beam: {} applies to 3-D beams only (dimension 3)", word);
+  };
+  auto only_beam = [&](const char *word) {
+    if (c.model == MODEL_SPRINGS)
+      error->all(FLERR, "Bond_coeff beam: {} applies to beams (N E A I), not to shearbeam", word);
+  };
+  bool bending = false, mohr = false, twist = false;
   int iarg = 4;
   while (iarg < narg) {
     const std::string word = arg[iarg];
@@ -123,15 +137,43 @@ void BondBeam::coeff(int narg, char **arg)
     };
     if (word == "shear") {
       need(2, "shear (G ks)");
-      if (c.model == MODEL_SPRINGS)
-        error->all(FLERR,
-                   "Bond_coeff beam: shear (Timoshenko) applies to beams (N E A I), not to "
-                   "shearbeam");
+      only_beam("shear (Timoshenko)");
+      if (c.G > 0.0)
+        error->all(FLERR, "Bond_coeff beam: the shear modulus is given twice (shear, poisson)");
       c.G = positive("shear G", arg[iarg + 1]);
       c.ks = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       if (c.ks <= 0.0 || c.ks > 1.0)
         error->all(FLERR, "Bond_coeff beam: shear ks = {} must be in (0, 1]", c.ks);
       iarg += 3;
+    } else if (word == "poisson") {
+      need(1, "poisson (nu)");
+      only_beam("poisson");
+      if (c.G > 0.0)
+        error->all(FLERR, "Bond_coeff beam: the shear modulus is given twice (shear, poisson)");
+      c.nu = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (c.nu <= -1.0 || c.nu >= 0.5)
+        error->all(FLERR, "Bond_coeff beam: poisson nu = {} must be in (-1, 0.5)", c.nu);
+      c.G = c.E / (2.0 * (1.0 + c.nu));
+      c.G_from_nu = 1;
+      iarg += 2;
+    } else if (word == "section") {
+      need(3, "section (Iy Iz J)");
+      only_3d("section");
+      only_beam("section");
+      c.Iy = positive("section Iy", arg[iarg + 1]);
+      c.Iz = positive("section Iz", arg[iarg + 2]);
+      c.J = positive("section J", arg[iarg + 3]);
+      iarg += 4;
+    } else if (word == "twist") {
+      need(1, "twist (kt)");
+      only_3d("twist");
+      if (c.model != MODEL_SPRINGS)
+        error->all(FLERR,
+                   "Bond_coeff beam: twist (a torsion spring) applies to shearbeam; a beam's "
+                   "torsion is G J / L0");
+      c.kt = positive("twist kt", arg[iarg + 1]);
+      twist = true;
+      iarg += 2;
     } else if (word == "break") {
       need(2, "break (sigma0 tau0)");
       c.breakable = 1;
@@ -179,12 +221,18 @@ void BondBeam::coeff(int narg, char **arg)
       iarg += 4;
     } else
       error->all(FLERR,
-                 "Bond_coeff beam: unknown keyword '{}' (allowed: shear, break, bending, mohr, "
-                 "scatter)",
+                 "Bond_coeff beam: unknown keyword '{}' (allowed: shear, poisson, section, twist, "
+                 "break, bending, mohr, scatter)",
                  word);
   }
   if (!c.breakable && (bending || mohr || c.scatter))
     error->all(FLERR, "Bond_coeff beam: bending, mohr and scatter need the break keyword");
+  if (three_d && c.model == MODEL_BEAM && c.G <= 0.0)
+    error->all(FLERR,
+               "Bond_coeff beam: a 3-D beam needs the shear modulus for its torsion (poisson nu, "
+               "or shear G ks)");
+  if (three_d && c.model == MODEL_SPRINGS && !twist)
+    error->all(FLERR, "Bond_coeff beam: a 3-D shearbeam needs its torsion spring (twist kt)");
   set_coeff(c);
 
   for (int i = ilo; i <= ihi; i++) {
@@ -202,10 +250,7 @@ void BondBeam::init_style()
                "Bond style beam requires atom_style mca (its quaternions are the "
                "particles' orientations), not atom_style {}",
                atom->atom_style);
-  if (domain->dimension != 2)
-    error->all(FLERR,
-               "Bond style beam requires dimension 2 (the 3-D frame element is not "
-               "implemented yet)");
+  nrec = REC_REF + nref(domain->dimension);
 
   fix_state = dynamic_cast<FixBeamState *>(MCACompat::fix_by_id(modify, FIX_ID));
   if (!fix_state) {
@@ -243,9 +288,9 @@ void BondBeam::estimate_longest_bond()
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int j = atom->map(atom->bond_atom[i][m]);
       if (j < 0) continue;
-      double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], 0.0};
+      double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       MCACompat::minimum_image(domain, d);
-      lmax = MAX(lmax, sqrt(d[0] * d[0] + d[1] * d[1]));
+      lmax = MAX(lmax, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
     }
   double all;
   MPI_Allreduce(&lmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -269,18 +314,19 @@ void BondBeam::fill_records(int nlist, const int *list, long row_stride, long co
 {
   const int newton = force->newton_bond;
   const tagint *tag = atom->tag;
+  const int nvalues = nref(domain->dimension);
   int missing = 0, zero = 0;
   double lmax = 0.0;
   for (int n = 0; n < nlist; n++) {
     const int i1 = list[n * row_stride], i2 = list[n * row_stride + column_stride];
     const int type = list[n * row_stride + 2 * column_stride];
-    double *rec = out + n * NREC;
+    double *rec = out + n * nrec;
     const double *ref = fix_state->reference(i1, i2, newton);
     if (!ref) {
       missing = 1;
       continue;
     }
-    for (int k = 0; k < NREF; k++) rec[k] = ref[k];
+    for (int k = 0; k < nvalues; k++) rec[REC_REF + k] = ref[k];
     const bool swap = tag[i1] > tag[i2];
     rec[REC_SWAP] = swap ? 1.0 : 0.0;
     rec[REC_STRENGTH] = (type > 0)
@@ -313,50 +359,71 @@ void BondBeam::compute(int eflag, int vflag)
     if (nlist > maxrecords) {
       maxrecords = nlist + nlist / 4 + 16;
       memory->destroy(records);
-      memory->create(records, maxrecords * NREC, "bond:records");
+      memory->create(records, maxrecords * nrec, "bond:records");
     }
     fill_records(nlist, nlist ? bondlist[0] : nullptr, 3, 1, records);
   }
 
+  std::vector<int> broken;
+  if (domain->dimension == 3)
+    evaluate<3>(nlist, bondlist, broken);
+  else
+    evaluate<2>(nlist, bondlist, broken);
+  if (breaking) remove_broken(static_cast<int>(broken.size() / 2), broken.data());
+}
+
+/* ----------------------------------------------------------------------
+   forces and torques of the listed bonds; those that break go to broken
+------------------------------------------------------------------------- */
+
+template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vector<int> &broken)
+{
   double **x = atom->x;
   double **f = atom->f;
   double **torque = atom->torque;
   double **quat = fix_state->avec->quat;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
-  std::vector<int> broken;
 
   for (int n = 0; n < nlist; n++) {
     const int type = bondlist[n][2];
     if (type <= 0) continue;
-    const double *rec = &records[n * NREC];
-    // the element in the order lower atom ID first (BeamKernels::BeamForce)
+    const double *rec = &records[n * nrec];
+    // the element in the order lower atom ID first (BeamKernels::beam_bond)
     const bool swap = rec[REC_SWAP] != 0.0;
     const int i = swap ? bondlist[n][1] : bondlist[n][0];
     const int j = swap ? bondlist[n][0] : bondlist[n][1];
-    const BeamCoeff &c = coeffs[type];
-    const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1];
-    const BeamForce out = beam_force_2d(c, rec, dx, dy, planar_angle(quat[i][0], quat[i][3]),
-                                        planar_angle(quat[j][0], quat[j][3]));
-    if (c.breakable && break_measure(c, out, rec[REC_STRENGTH]) >= 1.0) {
+    const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], DIM == 3 ? x[j][2] - x[i][2] : 0.0};
+    const BeamBond out =
+        beam_bond<DIM>(coeffs[type], rec + REC_REF, d, quat[i], quat[j], rec[REC_STRENGTH]);
+    if (out.measure >= 1.0) {
       bondlist[n][2] = 0;
       broken.push_back(bondlist[n][0]);
       broken.push_back(bondlist[n][1]);
       continue;
     }
     if (newton_bond || i < nlocal) {
-      f[i][0] -= out.fx;
-      f[i][1] -= out.fy;
-      torque[i][2] += out.ti;
+      f[i][0] -= out.f[0];
+      f[i][1] -= out.f[1];
+      if (DIM == 3) {
+        f[i][2] -= out.f[2];
+        torque[i][0] += out.ti[0];
+        torque[i][1] += out.ti[1];
+      }
+      torque[i][2] += out.ti[2];
     }
     if (newton_bond || j < nlocal) {
-      f[j][0] += out.fx;
-      f[j][1] += out.fy;
-      torque[j][2] += out.tj;
+      f[j][0] += out.f[0];
+      f[j][1] += out.f[1];
+      if (DIM == 3) {
+        f[j][2] += out.f[2];
+        torque[j][0] += out.tj[0];
+        torque[j][1] += out.tj[1];
+      }
+      torque[j][2] += out.tj[2];
     }
-    if (evflag) tally(i, j, nlocal, newton_bond, out.energy, out.fx, out.fy, dx, dy);
+    if (evflag) tally(i, j, nlocal, newton_bond, out.energy, out.f, d);
   }
-  if (breaking) remove_broken(static_cast<int>(broken.size() / 2), broken.data());
 }
 
 /* ----------------------------------------------------------------------
@@ -400,15 +467,14 @@ void BondBeam::remove_broken(int nbroken, const int *pairs)
 }
 
 /* ----------------------------------------------------------------------
-   energy and virial of a bond whose force on j is (fx, fy), d = x_j - x_i
+   energy and virial of a bond whose force on j is f, d = x_j - x_i
    (Bond::ev_tally_xyz, which LAMMPS 2021 does not have)
 ------------------------------------------------------------------------- */
 
-void BondBeam::tally(int i, int j, int nlocal, int newton_bond, double ebond, double fx, double fy,
-                     double dx, double dy)
+void BondBeam::tally(int i, int j, int nlocal, int newton_bond, double ebond, const double *f,
+                     const double *d)
 {
-  double share = 1.0;
-  if (!newton_bond) share = 0.5 * ((i < nlocal) + (j < nlocal));
+  const double share = bond_share(newton_bond, i, j, nlocal);
   if (eflag_either) {
     if (eflag_global) energy += share * ebond;
     if (eflag_atom) {
@@ -417,7 +483,8 @@ void BondBeam::tally(int i, int j, int nlocal, int newton_bond, double ebond, do
     }
   }
   if (vflag_either) {
-    const double v[6] = {dx * fx, dy * fy, 0.0, dx * fy, 0.0, 0.0};
+    double v[6];
+    virial_terms(d, f, v);
     if (vflag_global)
       for (int k = 0; k < 6; k++) virial[k] += share * v[k];
     if (vflag_atom) {
@@ -460,7 +527,14 @@ void BondBeam::write_data(FILE *fp)
     std::string line = (c.model == MODEL_SPRINGS)
         ? fmt::format("{} shearbeam {:.17g} {:.17g}", i, c.kn, c.kr)
         : fmt::format("{} {:.17g} {:.17g} {:.17g}", i, c.E, c.A, c.I);
-    if (c.G > 0.0) line += fmt::format(" shear {:.17g} {:.17g}", c.G, c.ks);
+    if (c.ks > 0.0) line += fmt::format(" shear {:.17g} {:.17g}", c.G, c.ks);
+    if (c.G_from_nu) line += fmt::format(" poisson {:.17g}", c.nu);
+    if (domain->dimension == 3) {
+      if (c.model == MODEL_SPRINGS)
+        line += fmt::format(" twist {:.17g}", c.kt);
+      else
+        line += fmt::format(" section {:.17g} {:.17g} {:.17g}", c.Iy, c.Iz, c.J);
+    }
     if (c.breakable) line += fmt::format(" break {:.17g} {:.17g}", c.sigma0, c.tau0);
     if (c.fibre > 0.0) line += fmt::format(" bending {:.17g}", c.fibre);
     if (c.mohr) line += fmt::format(" mohr {:.17g}", c.phi_deg);
@@ -488,8 +562,13 @@ double BondBeam::single(int type, double /*rsq*/, int i, int j, double &fforce)
   const int lo = atom->tag[i] < atom->tag[j] ? i : j, hi = (lo == i) ? j : i;
   double **x = atom->x;
   double **quat = fix_state->avec->quat;
-  double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], 0.0};
+  double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
   MCACompat::minimum_image(domain, d);
+  if (domain->dimension == 3) {
+    const BeamForce3D out = beam_force_3d(coeffs[type], ref, d, quat[lo], quat[hi]);
+    fforce = -out.N / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return out.energy;
+  }
   const BeamForce out =
       beam_force_2d(coeffs[type], ref, d[0], d[1], planar_angle(quat[lo][0], quat[lo][3]),
                     planar_angle(quat[hi][0], quat[hi][3]));
@@ -502,6 +581,6 @@ double BondBeam::single(int type, double /*rsq*/, int i, int j, double &fforce)
 double BondBeam::memory_usage()
 {
   double bytes = Bond::memory_usage();
-  bytes += static_cast<double>(maxrecords) * NREC * sizeof(double);
+  bytes += static_cast<double>(maxrecords) * nrec * sizeof(double);
   return bytes;
 }

@@ -23,11 +23,13 @@ BondStyle(beam,BondBeam);
 #include "beam_kernels.h"
 #include "bond.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 /* ----------------------------------------------------------------------
-   bond_style beam: the 2-D co-rotational beam of the NUMFRAC lattice
-   (beam_kernels.h) between particles of atom_style mca, whose
+   bond_style beam: the co-rotational beam of the NUMFRAC lattice, 2-D
+   or 3-D (beam_kernels.h), between particles of atom_style mca, whose
    quaternions carry the orientations.  The reference state of each bond
    lives in the internal fix BEAM_STATE; the style copies it into an array
    parallel to the bond list whenever the list is built.
@@ -35,10 +37,10 @@ namespace LAMMPS_NS {
 
 class BondBeam : public Bond {
  public:
-  // what the style keeps for each entry of the bond list: the reference
-  // state (order lower atom ID first), whether that is the list's order
-  // reversed, and the strength factor of the bond
-  enum { REC_SWAP = BeamKernels::NREF, REC_STRENGTH, NREC };
+  // what the style keeps for each entry of the bond list: whether the
+  // order lower atom ID first is the list's order reversed, the strength
+  // factor of the bond, and its reference state (nrec values in all)
+  enum { REC_SWAP, REC_STRENGTH, REC_REF };
 
   BondBeam(class LAMMPS *);
   ~BondBeam() override;
@@ -57,6 +59,7 @@ class BondBeam : public Bond {
   BeamKernels::BeamCoeff *coeffs;    // by bond type
   class FixBeamState *fix_state;
   double L0_max;    // longest reference length seen (communication cutoff check)
+  int nrec;         // values per record: REC_REF + the reference state of the dimension
 
   // the records of every entry of a bond list (i1, i2, type) into
   // records[n * NREC], when the list was built again since the last call;
@@ -77,8 +80,9 @@ class BondBeam : public Bond {
  private:
   double *records;
   int maxrecords;
-  void tally(int i, int j, int nlocal, int newton_bond, double ebond, double fx, double fy,
-             double dx, double dy);
+  template <int DIM> void evaluate(int nlist, int **bondlist, std::vector<int> &broken);
+  void tally(int i, int j, int nlocal, int newton_bond, double ebond, const double *f,
+             const double *d);
 };
 
 }    // namespace LAMMPS_NS

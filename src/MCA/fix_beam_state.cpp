@@ -19,6 +19,7 @@
 #include "atom_masks.h"
 #include "atom_vec_mca.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "mca_compat.h"
 #include "memory.h"
@@ -34,7 +35,8 @@ using namespace BeamKernels;
 ------------------------------------------------------------------------- */
 
 FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), avec(nullptr), maxbond(0), state(nullptr), nmax_old(0)
+    Fix(lmp, narg, arg), avec(nullptr), maxbond(0), nslot(SLOT_REF + nref(domain->dimension)),
+    state(nullptr), nmax_old(0)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix BEAM_STATE command (internal fix of bond beam)");
   if (!atom->molecular || atom->bond_per_atom <= 0)
@@ -42,7 +44,7 @@ FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
 
   restart_peratom = 1;
   comm_forward = 4;
-  maxexchange = atom->bond_per_atom * NSLOT;
+  maxexchange = atom->bond_per_atom * nslot;
   // under KOKKOS: syncs only the orientations, itself (send_orientations)
   datamask_read = EMPTY_MASK;
   datamask_modify = EMPTY_MASK;
@@ -144,7 +146,7 @@ double *FixBeamState::find_slot(int i, tagint partner) const
   const tagint *bond_atom = atom->bond_atom[i];
   const int nbond = atom->num_bond[i];
   for (int m = 0; m < nbond; m++)
-    if (bond_atom[m] == partner) return &state[i][m * NSLOT];
+    if (bond_atom[m] == partner) return &state[i][m * nslot];
   return nullptr;
 }
 
@@ -176,8 +178,13 @@ const double *FixBeamState::reference(int i1, int i2, int newton_bond)
   double **x = atom->x;
   double **quat = avec->quat;
   slot[SLOT_PARTNER] = static_cast<double>(tag[i2]);
-  reference_state(x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], planar_angle(quat[lo][0], quat[lo][3]),
-                  planar_angle(quat[hi][0], quat[hi][3]), slot + SLOT_REF);
+  if (domain->dimension == 3) {
+    const double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
+    reference_state_3d(d, quat[lo], quat[hi], slot + SLOT_REF);
+  } else
+    reference_state(x[hi][0] - x[lo][0], x[hi][1] - x[lo][1],
+                    planar_angle(quat[lo][0], quat[lo][3]), planar_angle(quat[hi][0], quat[hi][3]),
+                    slot + SLOT_REF);
 
   // with newton_bond off the partner stores the bond too; its owner sets
   // a ghost partner's copy when it lists the bond, at the same step
@@ -186,7 +193,7 @@ const double *FixBeamState::reference(int i1, int i2, int newton_bond)
     if (mirror && mirror[SLOT_PARTNER] != static_cast<double>(tag[i1]) &&
         !take_moved_state(i2, mirror, tag[i1])) {
       mirror[SLOT_PARTNER] = static_cast<double>(tag[i1]);
-      for (int k = 0; k < NREF; k++) mirror[SLOT_REF + k] = slot[SLOT_REF + k];
+      for (int k = SLOT_REF; k < nslot; k++) mirror[k] = slot[k];
     }
   }
   return slot + SLOT_REF;
@@ -203,14 +210,14 @@ bool FixBeamState::take_moved_state(int i, double *slot, tagint partner)
   // count is cleared, so that a bond made again later starts stress-free
   const double id = static_cast<double>(partner);
   for (int m = 0; m < maxbond; m++) {
-    double *other = &state[i][m * NSLOT];
+    double *other = &state[i][m * nslot];
     if (other == slot || other[SLOT_PARTNER] != id) continue;
-    for (int k = 0; k < NSLOT; k++) {
+    for (int k = 0; k < nslot; k++) {
       const double value = other[k];
       other[k] = slot[k];
       slot[k] = value;
     }
-    if (m >= atom->num_bond[i]) memset(other, 0, NSLOT * sizeof(double));
+    if (m >= atom->num_bond[i]) memset(other, 0, nslot * sizeof(double));
     return true;
   }
   return false;
@@ -224,15 +231,15 @@ bool FixBeamState::take_moved_state(int i, double *slot, tagint partner)
 void FixBeamState::remove_slot(int i, int m)
 {
   const int last = atom->num_bond[i] - 1;
-  if (m != last) memcpy(&state[i][m * NSLOT], &state[i][last * NSLOT], NSLOT * sizeof(double));
-  memset(&state[i][last * NSLOT], 0, NSLOT * sizeof(double));
+  if (m != last) memcpy(&state[i][m * nslot], &state[i][last * nslot], nslot * sizeof(double));
+  memset(&state[i][last * nslot], 0, nslot * sizeof(double));
 }
 
 /* ---------------------------------------------------------------------- */
 
 double FixBeamState::memory_usage()
 {
-  return static_cast<double>(atom->nmax) * maxbond * NSLOT * sizeof(double);
+  return static_cast<double>(atom->nmax) * maxbond * nslot * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------
@@ -241,7 +248,7 @@ double FixBeamState::memory_usage()
 
 void FixBeamState::grow_arrays(int nmax)
 {
-  const int ncol = (maxbond > 0 ? maxbond : 1) * NSLOT;
+  const int ncol = (maxbond > 0 ? maxbond : 1) * nslot;
   const int old = state ? nmax_old : 0;
   memory->grow(state, nmax, ncol, "beam:state");
   for (int i = old; i < nmax; i++) memset(state[i], 0, ncol * sizeof(double));
@@ -250,7 +257,7 @@ void FixBeamState::grow_arrays(int nmax)
 
 void FixBeamState::copy_arrays(int i, int j, int /*delflag*/)
 {
-  memcpy(state[j], state[i], maxbond * NSLOT * sizeof(double));
+  memcpy(state[j], state[i], maxbond * nslot * sizeof(double));
 }
 
 /* ----------------------------------------------------------------------
@@ -261,14 +268,14 @@ void FixBeamState::copy_arrays(int i, int j, int /*delflag*/)
 
 int FixBeamState::pack_exchange(int i, double *buf)
 {
-  memcpy(buf, state[i], maxbond * NSLOT * sizeof(double));
-  return maxbond * NSLOT;
+  memcpy(buf, state[i], maxbond * nslot * sizeof(double));
+  return maxbond * nslot;
 }
 
 int FixBeamState::unpack_exchange(int nlocal, double *buf)
 {
-  memcpy(state[nlocal], buf, maxbond * NSLOT * sizeof(double));
-  return maxbond * NSLOT;
+  memcpy(state[nlocal], buf, maxbond * nslot * sizeof(double));
+  return maxbond * nslot;
 }
 
 /* ----------------------------------------------------------------------
@@ -277,7 +284,7 @@ int FixBeamState::unpack_exchange(int nlocal, double *buf)
 
 int FixBeamState::pack_restart(int i, double *buf)
 {
-  const int n = maxbond * NSLOT;
+  const int n = maxbond * nslot;
   buf[0] = n + 2;
   buf[1] = maxbond;
   memcpy(buf + 2, state[i], n * sizeof(double));
@@ -296,13 +303,13 @@ void FixBeamState::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
   const double *record = &extra[nlocal][m];
-  const int nslot = static_cast<int>(record[1]);
-  bool valid = static_cast<int>(record[0]) == nslot * NSLOT + 2 && nslot == maxbond;
-  memset(state[nlocal], 0, maxbond * NSLOT * sizeof(double));
-  if (valid) memcpy(state[nlocal], record + 2, maxbond * NSLOT * sizeof(double));
+  const int nbond = static_cast<int>(record[1]);
+  bool valid = static_cast<int>(record[0]) == nbond * nslot + 2 && nbond == maxbond;
+  memset(state[nlocal], 0, maxbond * nslot * sizeof(double));
+  if (valid) memcpy(state[nlocal], record + 2, maxbond * nslot * sizeof(double));
   // a live slot holds its bond's partner, or nothing yet
   for (int b = 0; valid && b < atom->num_bond[nlocal]; b++) {
-    const double partner = state[nlocal][b * NSLOT + SLOT_PARTNER];
+    const double partner = state[nlocal][b * nslot + SLOT_PARTNER];
     if (partner != 0.0 && partner != static_cast<double>(atom->bond_atom[nlocal][b])) valid = false;
   }
   if (!valid)
@@ -315,10 +322,10 @@ void FixBeamState::unpack_restart(int nlocal, int nth)
 
 int FixBeamState::size_restart(int /*nlocal*/)
 {
-  return maxbond * NSLOT + 2;
+  return maxbond * nslot + 2;
 }
 
 int FixBeamState::maxsize_restart()
 {
-  return maxbond * NSLOT + 2;
+  return maxbond * nslot + 2;
 }

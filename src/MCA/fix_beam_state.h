@@ -38,7 +38,8 @@ namespace LAMMPS_NS {
 
 class FixBeamState : public Fix {
  public:
-  enum { SLOT_PARTNER, SLOT_REF, NSLOT = SLOT_REF + BeamKernels::NREF };
+  // a slot: the partner's ID, then the reference state (nslot values)
+  enum { SLOT_PARTNER, SLOT_REF };
 
   FixBeamState(class LAMMPS *, int, char **);
   ~FixBeamState() override;
@@ -79,7 +80,8 @@ class FixBeamState : public Fix {
 
  private:
   int maxbond;       // bond slots per atom
-  double **state;    // maxbond * NSLOT values per atom
+  int nslot;         // values per slot: SLOT_REF + the reference of the dimension
+  double **state;    // maxbond * nslot values per atom
   int nmax_old;      // rows allocated
   void send_orientations();
   double *find_slot(int i, tagint partner) const;

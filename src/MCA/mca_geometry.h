@@ -83,6 +83,18 @@ namespace MCAKernels {
     c[2] = a[0] * b[1] - a[1] * b[0];
   }
 
+  // the six virial terms of a force f at separation d, in the order of
+  // LAMMPS's ev_tally_xyz (xx, yy, zz, xy, xz, yz)
+  MCA_INLINE void virial_terms(const double *d, const double *f, double *v)
+  {
+    v[0] = d[0] * f[0];
+    v[1] = d[1] * f[1];
+    v[2] = d[2] * f[2];
+    v[3] = d[0] * f[1];
+    v[4] = d[0] * f[2];
+    v[5] = d[1] * f[2];
+  }
+
   // contact face area of a cell: R A N_c = 3 Omega
   MCA_INLINE double face_area(int packing, double radius, double volume)
   {

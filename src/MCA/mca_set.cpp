@@ -66,6 +66,9 @@ enum {
   EPSP,
   DAMAGE,
   ANGLE,
+  TURNX,
+  TURNY,
+  TURNZ,
   NSCALAR
 };
 
@@ -74,7 +77,8 @@ const ScalarKeyword scalar_keywords[NSCALAR] = {
     {"radius", 0.0, BIG, false}, {"diameter", 0.0, BIG, false}, {"density", 0.0, BIG, false},
     {"mass", 0.0, BIG, false},   {"volume", 0.0, BIG, false},   {"inertia", 0.0, BIG, false},
     {"smean", -BIG, BIG, true},  {"seq", 0.0, BIG, true},       {"eeq", 0.0, BIG, true},
-    {"epsp", 0.0, BIG, true},    {"damage", 0.0, 1.0, true},    {"angle", -BIG, BIG, true}};
+    {"epsp", 0.0, BIG, true},    {"damage", 0.0, 1.0, true},    {"angle", -BIG, BIG, true},
+    {"turnx", -BIG, BIG, true},  {"turny", -BIG, BIG, true},    {"turnz", -BIG, BIG, true}};
 
 std::string range_text(const ScalarKeyword &k)
 {
@@ -173,7 +177,7 @@ void MCASet::command(int narg, char **arg)
     } else {
       error->all(FLERR,
                  "Unknown mca_set keyword {} (allowed: packing radius diameter density "
-                 "mass volume inertia smean stress seq eeq epsp damage angle)",
+                 "mass volume inertia smean stress seq eeq epsp damage angle turnx turny turnz)",
                  keyword);
     }
   }
@@ -181,6 +185,9 @@ void MCASet::command(int narg, char **arg)
     error->all(FLERR, "mca_set: use either radius or diameter, not both");
   if (values[MASS].given && values[DENSITY].given)
     error->all(FLERR, "mca_set: use either mass or density, not both");
+  const bool turn = values[TURNX].given || values[TURNY].given || values[TURNZ].given;
+  if (turn && values[ANGLE].given)
+    error->all(FLERR, "mca_set: use either angle (set) or turnx/turny/turnz (turn by), not both");
 
   // evaluate atom-style variables over all local atoms
 
@@ -293,6 +300,22 @@ void MCASet::command(int narg, char **arg)
       avec->quat[i][0] = cos(half);
       avec->quat[i][1] = avec->quat[i][2] = 0.0;
       avec->quat[i][3] = sin(half);
+    }
+    // a turn from the present orientation by the rotation vector (degrees)
+    if (turn) {
+      const double to_rad = MathConst::MY_PI / 180.0;
+      const double r[3] = {values[TURNX].given ? values[TURNX].at(i) * to_rad : 0.0,
+                           values[TURNY].given ? values[TURNY].at(i) * to_rad : 0.0,
+                           values[TURNZ].given ? values[TURNZ].at(i) * to_rad : 0.0};
+      const double angle = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+      const double s = (angle > 0.0) ? sin(0.5 * angle) / angle : 0.0;
+      const double dq[4] = {cos(0.5 * angle), s * r[0], s * r[1], s * r[2]};
+      double *q = avec->quat[i];
+      const double turned[4] = {dq[0] * q[0] - dq[1] * q[1] - dq[2] * q[2] - dq[3] * q[3],
+                                dq[0] * q[1] + dq[1] * q[0] + dq[2] * q[3] - dq[3] * q[2],
+                                dq[0] * q[2] - dq[1] * q[3] + dq[2] * q[0] + dq[3] * q[1],
+                                dq[0] * q[3] + dq[1] * q[2] - dq[2] * q[1] + dq[3] * q[0]};
+      for (int k = 0; k < 4; k++) q[k] = turned[k];
     }
     if (stress_given)
       for (int m = 0; m < MCAAtomFields::NSTRESS; m++) avec->stress[i][m] = new_stress[m];
