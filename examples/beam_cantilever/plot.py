@@ -39,7 +39,7 @@ def static_line(path):
     return int(match.group(1)), float(match.group(2)), float(match.group(3))
 
 
-fig, axes = plt.subplots(1, 2, figsize=(12, 4.4))
+fig, axes = plt.subplots(1, 3, figsize=(17, 4.4))
 for n in (1, 4, 10):
     _, w, t = static_line(f"log.static{n}")
     print(f"static, {n:2d} elements: tip deflection / (PL^3/3EI) = {w:.10f}, "
@@ -69,5 +69,32 @@ axes[1].set_ylabel("tip deflection / (P L^3 / 3 EI)")
 axes[1].set_title("free vibration (fix nve/mca)")
 axes[1].set_xlim(0, 2.5)
 axes[1].legend(loc="lower left", fontsize=8)
+
+# ringdown: the log decrement of the tip's swings against beta omega / 2
+for beta in (0.001, 0.002):
+    ring = thermo_runs(f"log.ringdown{beta}")[-1]
+    time, w = ring["Time"] - ring["Time"][0], ring["v_w"]
+    k = np.nonzero((w[1:-1] > w[:-2]) & (w[1:-1] >= w[2:]) & (w[1:-1] > 0))[0] + 1
+    peaks, times = [], []
+    for m in k:
+        a, b, c = w[m - 1], w[m], w[m + 1]
+        shift = 0.5 * (a - c) / (a - 2 * b + c)
+        peaks.append(b - 0.25 * (a - c) * shift)
+        times.append(time[m] + shift * (time[1] - time[0]))
+    peaks, times = np.array(peaks), np.array(times)
+    slope = np.polyfit(times, np.log(peaks), 1)[0]
+    period = np.diff(times).mean()
+    omega = 2 * math.pi / period
+    zeta = -slope / omega
+    print(f"ringdown, 5 elements, beta {beta}: period {period:.5f}, damping ratio "
+          f"{zeta:.6f}, beta omega / 2 = {beta * omega / 2:.6f} "
+          f"(ratio {zeta / (beta * omega / 2):.4f}; {len(peaks)} swings)")
+    axes[2].plot(time, w / 1.0e-4 * 3 * E * I, label=f"beta = {beta}: zeta = {zeta:.5f}")
+    axes[2].plot(time, peaks[0] * np.exp(-beta * omega / 2 * omega * (time - times[0]))
+                 / 1.0e-4 * 3 * E * I, "k--", lw=0.6)
+axes[2].set_xlabel("time after the load is taken off")
+axes[2].set_ylabel("tip deflection / (P L^3 / 3 EI)")
+axes[2].set_title("bond damping, 5 elements: zeta = beta omega / 2")
+axes[2].legend(loc="lower left", fontsize=8)
 fig.tight_layout()
 fig.savefig("cantilever.png", dpi=110)

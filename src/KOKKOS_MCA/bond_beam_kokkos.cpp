@@ -24,6 +24,7 @@
 #include "force.h"
 #include "memory_kokkos.h"
 #include "neighbor_kokkos.h"
+#include "update.h"
 
 #include <algorithm>
 #include <array>
@@ -42,6 +43,8 @@ using atomic_view = Kokkos::View<typename View::data_type, typename View::array_
 template <class DeviceType, int DIM> struct BeamForceKernel {
   template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
   view<decltype(AtomKokkos::k_x)> x;
+  view<decltype(AtomKokkos::k_v)> v;    // (read with damping only)
+  view<decltype(AtomKokkos::k_omega)> omega;
   atomic_view<view<decltype(AtomKokkos::k_f)>> f;
   atomic_view<view<decltype(AtomKokkos::k_torque)>> torque;
   MCAKokkos::double_2d<DeviceType> quat, records;
@@ -68,8 +71,18 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
     const double qi[4] = {quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3)};
     const double qj[4] = {quat(j, 0), quat(j, 1), quat(j, 2), quat(j, 3)};
     const double d[3] = {x(j, 0) - x(i, 0), x(j, 1) - x(i, 1), DIM == 3 ? x(j, 2) - x(i, 2) : 0.0};
-    const BeamBond out =
-        beam_bond<DIM>(coeff(type), ref, d, qi, qj, records(n, BondBeam::REC_STRENGTH));
+    const BeamCoeff &c = coeff(type);
+    BeamBond out;
+    if (c.beta > 0.0) {
+      BeamRates rates;
+      for (int k = 0; k < 3; k++) {
+        rates.w[k] = v(j, k) - v(i, k);
+        rates.oi[k] = omega(i, k);
+        rates.oj[k] = omega(j, k);
+      }
+      out = beam_bond<DIM>(c, ref, d, qi, qj, records(n, BondBeam::REC_STRENGTH), &rates);
+    } else
+      out = beam_bond<DIM>(c, ref, d, qi, qj, records(n, BondBeam::REC_STRENGTH));
     if (out.measure >= 1.0) {
       records(n, BondBeam::REC_STRENGTH) = -1.0;
       const int k = Kokkos::atomic_fetch_add(&nbroken(), 1);
@@ -104,6 +117,7 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
     // BondBeam::tally
     const double share = bond_share(newton_bond, i, j, nlocal);
     if (eflag_global) ev.evdwl += share * out.energy;
+    ev.ecoul += share * out.dissipation;    // the damping's power
     if (eflag_atom) {
       if (own_i) eatom(i) += 0.5 * out.energy;
       if (own_j) eatom(j) += 0.5 * out.energy;
@@ -189,7 +203,8 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     k_records.template sync<DeviceType>();
   }
 
-  atomKK->sync(execution_space, datamask_read | MCA_QUAT_MASK);
+  atomKK->sync(execution_space,
+               datamask_read | MCA_QUAT_MASK | (damping ? V_MASK | OMEGA_MASK : 0));
   atomKK->modified(execution_space, datamask_modify);
 
   if (domain->dimension == 3)
@@ -233,6 +248,10 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
 {
   BeamForceKernel<DeviceType, DIM> kernel;
   kernel.x = atomKK->k_x.template view<DeviceType>();
+  if (damping) {
+    kernel.v = atomKK->k_v.template view<DeviceType>();
+    kernel.omega = atomKK->k_omega.template view<DeviceType>();
+  }
   kernel.f = atomKK->k_f.template view<DeviceType>();
   kernel.torque = atomKK->k_torque.template view<DeviceType>();
   kernel.quat = avecKK->k_quat.template view<DeviceType>();
@@ -269,6 +288,7 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
   if (eflag_global) energy += ev.evdwl;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += ev.v[k];
+  if (damping && !update->setupflag) fix_state->dissipated.local += ev.ecoul * update->dt;
 }
 
 namespace LAMMPS_NS {

@@ -43,26 +43,23 @@
    co-rotational form.  The section's axes y, z, normal to the chord,
    are fixed in each particle's body frame when the bond is first seen
    (stored in both particles' frames: y_i, z_i, y_j, z_j, which coincide
-   at rest and under any rigid motion).  The ends' turns relative to the
-   chord e = d / L and the twist of j against i are measured by
-     about z:  a_i = -e.y_i,  a_j = -e.y_j;   about y:  c_i = e.z_i,  c_j = e.z_j;
-     twist:    p = (z_i.y_j - y_i.z_j) / 2,
-   the sines of the angles (the rotations themselves to second order), so
+   at rest and under any rigid motion; x = y x z is the chord at rest).
+   The ends' turns relative to the chord e = d / L and the twist of j
+   against i are measured by
+     about z:  a_i = -2 e.y_i / (1 + e.x_i),   about y:  c_i = 2 e.z_i / (1 + e.x_i)
+     (and a_j, c_j),   twist:  p = 2 S / (1 + C),
+     S = (z_i.y_j - y_i.z_j) / 2,  C = (y_i.y_j + z_i.z_j) / 2,
+   in a plane 2 tan(q / 2) of the angle q (the angles to third order;
+   monotone up to a half turn, where the energy grows without bound), so
      E = EA u^2 / (2 L0) + GJ p^2 / (2 L0)
          + [own_z (a_i^2 + a_j^2) + 2 cross_z a_i a_j] / 2   (own, cross: as
          + [own_y (c_i^2 + c_j^2) + 2 cross_y c_i c_j] / 2    in 2-D, I_z, I_y)
    depends on dot products of vectors that turn together under a rigid
    motion only (zero force for any rigid motion), its linearisation is the
    12 x 12 element (nodally exact: a cantilever of any number of elements
-   gives PL^3/3EI), and forces and torques are its exact gradient: with
-   M_iz = dE/da_i etc., T = GJ p / L0 and g = dE/de,
-     g = -M_iz y_i - M_jz y_j + M_iy z_i + M_jy z_j,
-     force on j  -(N e + (g - (g.e) e) / L),  on i the opposite,
-     torque on i  M_iz y_i x e - M_iy z_i x e + T (y_i x z_j - z_i x y_j) / 2,
-     torque on j  M_jz y_j x e - M_jy z_j x e - T (y_j x z_i - z_j x y_i) / 2
-   (a turn w of a body changes its axes by w x y, w x z: the torque is
-   minus the sum of axis x dE/d(axis)).  In a planar motion the 3-D element
-   is the 2-D one with sin q in place of q (they agree to second order).
+   gives PL^3/3EI), and forces and torques are its exact gradient
+   (frame_state, frame_loads below).  In a planar motion the 3-D element
+   is the 2-D one with 2 tan(q / 2) in place of q.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_BEAM_KERNELS_H
@@ -99,6 +96,7 @@ namespace BeamKernels {
     int G_from_nu;
     double EA, EI, EIy, EIz, GJ;
     double shear, shear_y, shear_z;    // 12 EI / (ks G A): Phi = shear / L0^2
+    double beta;                       // stiffness-proportional damping: time constant (0: none)
     int breakable;                     // 1: the elliptic criterion below
     int mohr;                          // 1: Mohr-Coulomb branch in compression
     double sigma0;                     // tensile strength
@@ -199,8 +197,10 @@ namespace BeamKernels {
     ref[REF_BJ] = wrap_angle(a - tj);
   }
 
-  // 3-D: the section's z axis is particle i's body z axis (its x axis if
-  // the bond runs along z) made normal to the chord, y = z x e
+  // 3-D: the section's z axis is particle i's body z axis made normal to
+  // the chord, or its body x axis if the bond is within 45 degrees of body
+  // z (a projection of at least 0.7: well conditioned); y = z x e.
+  // (Quaternions of unit length, as the integrators and mca_set keep them.)
   MCA_INLINE void reference_state_3d(const double *d, const double *qi, const double *qj,
                                      double *ref)
   {
@@ -209,15 +209,10 @@ namespace BeamKernels {
     const double body_z[3] = {0.0, 0.0, 1.0}, body_x[3] = {1.0, 0.0, 0.0};
     double axis[3], z[3], y[3];
     to_space(qi, body_z, axis);
-    double along = dot3(axis, e);
+    if (fabs(dot3(axis, e)) > 0.70710678118654752) to_space(qi, body_x, axis);
+    const double along = dot3(axis, e);
     for (int k = 0; k < 3; k++) z[k] = axis[k] - along * e[k];
-    double size = sqrt(dot3(z, z));
-    if (size < 1.0e-6) {
-      to_space(qi, body_x, axis);
-      along = dot3(axis, e);
-      for (int k = 0; k < 3; k++) z[k] = axis[k] - along * e[k];
-      size = sqrt(dot3(z, z));
-    }
+    const double size = sqrt(dot3(z, z));
     for (int k = 0; k < 3; k++) z[k] /= size;
     cross3(z, e, y);
     ref[REF_L0] = L;
@@ -276,58 +271,194 @@ namespace BeamKernels {
     return out;
   }
 
-  MCA_INLINE BeamForce3D beam_force_3d(const BeamCoeff &c, const double *ref, const double *d,
-                                       const double *qi, const double *qj)
+  MCA_INLINE double torsion_stiffness(const BeamCoeff &c, const double L0)
   {
-    BeamForce3D out;
-    const double L0 = ref[REF_L0];
-    const double L = sqrt(dot3(d, d));
-    const double e[3] = {d[0] / L, d[1] / L, d[2] / L};
+    return (c.model == MODEL_SPRINGS) ? c.kt : c.GJ / L0;
+  }
+
+  /* --------------------------------------------------------------------
+     a 3-D element now: the chord e, L, the measures of the ends' turns
+     and of the twist, and their gradients (see the top of the file):
+       a_i = -2 e.y_i / (1 + e.x_i),  c_i = 2 e.z_i / (1 + e.x_i)
+     (x_i = y_i x z_i; the same for j), p = 2 S / (1 + C) with
+     S = (z_i.y_j - y_i.z_j) / 2, C = (y_i.y_j + z_i.z_j) / 2.
+     A measure m of one end depends on e and that end's axes through dot
+     products with e only, so a turn w of the particle changes it as
+     turning e by -w would: dm/dw = (dm/de) x e.  dp/dw_j = -dp/dw_i.
+  -------------------------------------------------------------------- */
+
+  struct FrameState {
+    double L, e[3];
+    double ai, aj, ci, cj, p;    // the measures
+    double gai[3], gaj[3];       // their gradients by e
+    double gci[3], gcj[3];
+    double gp[3];    // dp / d(turn of i)
+  };
+
+  // one end: the measures a (about z), c (about y) and their gradients by e
+  MCA_INLINE void end_measures(const double *e, const double *y, const double *z, double &a,
+                               double &c, double *ga, double *gc)
+  {
+    double x[3];
+    cross3(y, z, x);
+    const double sy = dot3(e, y), sz = dot3(e, z);
+    const double inv = 1.0 / (1.0 + dot3(e, x));
+    a = -2.0 * sy * inv;
+    c = 2.0 * sz * inv;
+    for (int k = 0; k < 3; k++) {
+      ga[k] = -2.0 * inv * (y[k] + 0.5 * a * x[k]);
+      gc[k] = 2.0 * inv * (z[k] - 0.5 * c * x[k]);
+    }
+  }
+
+  MCA_INLINE FrameState frame_state(const double *ref, const double *d, const double *qi,
+                                    const double *qj)
+  {
+    FrameState st;
+    st.L = sqrt(dot3(d, d));
+    for (int k = 0; k < 3; k++) st.e[k] = d[k] / st.L;
     double yi[3], zi[3], yj[3], zj[3];
     to_space(qi, ref + REF_YI, yi);
     to_space(qi, ref + REF_ZI, zi);
     to_space(qj, ref + REF_YJ, yj);
     to_space(qj, ref + REF_ZJ, zj);
-    const double ai = -dot3(e, yi), aj = -dot3(e, yj);       // turns about z
-    const double ci = dot3(e, zi), cj = dot3(e, zj);         // turns about y
-    const double p = 0.5 * (dot3(zi, yj) - dot3(yi, zj));    // twist of j against i
-    const double u = L - L0;
+    end_measures(st.e, yi, zi, st.ai, st.ci, st.gai, st.gci);
+    end_measures(st.e, yj, zj, st.aj, st.cj, st.gaj, st.gcj);
+    // twist: dS/dw_i = (z_i x y_j - y_i x z_j) / 2, dC/dw_i = (y_i x y_j + z_i x z_j) / 2
+    const double S = 0.5 * (dot3(zi, yj) - dot3(yi, zj));
+    const double inv = 1.0 / (1.0 + 0.5 * (dot3(yi, yj) + dot3(zi, zj)));
+    st.p = 2.0 * S * inv;
+    double zy[3], yz[3], yy[3], zz[3];
+    cross3(zi, yj, zy);
+    cross3(yi, zj, yz);
+    cross3(yi, yj, yy);
+    cross3(zi, zj, zz);
+    for (int k = 0; k < 3; k++) st.gp[k] = inv * ((zy[k] - yz[k]) - 0.5 * st.p * (yy[k] + zz[k]));
+    return st;
+  }
+
+  // the force on j and the torques of the generalised loads (the energy's
+  // derivatives by the measures) N (axial u), T (p), M_iz, M_jz (a_i, a_j),
+  // M_iy, M_jy (c_i, c_j): with g_i = M_iz ga_i + M_iy gc_i, g_j likewise,
+  // f_j = -(N e + P (g_i + g_j) / L) (P: normal to e), t_i = -g_i x e - T gp,
+  // t_j = -g_j x e + T gp; returns the shear force's size |P (g_i + g_j)| / L
+  MCA_INLINE double frame_loads(const FrameState &st, const double N, const double T,
+                                const double Miz, const double Mjz, const double Miy,
+                                const double Mjy, double *f, double *ti, double *tj)
+  {
+    double gi[3], gj[3], shear[3];
+    for (int k = 0; k < 3; k++) {
+      gi[k] = Miz * st.gai[k] + Miy * st.gci[k];
+      gj[k] = Mjz * st.gaj[k] + Mjy * st.gcj[k];
+      shear[k] = gi[k] + gj[k];
+    }
+    const double along = dot3(shear, st.e);
+    for (int k = 0; k < 3; k++) {
+      shear[k] = (shear[k] - along * st.e[k]) / st.L;
+      f[k] = -(N * st.e[k] + shear[k]);
+    }
+    double ge[3];
+    cross3(gi, st.e, ge);
+    for (int k = 0; k < 3; k++) ti[k] = -ge[k] - T * st.gp[k];
+    cross3(gj, st.e, ge);
+    for (int k = 0; k < 3; k++) tj[k] = -ge[k] + T * st.gp[k];
+    return sqrt(dot3(shear, shear));
+  }
+
+  MCA_INLINE BeamForce3D beam_force_3d(const BeamCoeff &c, const double *ref, const FrameState &st)
+  {
+    BeamForce3D out;
+    const double L0 = ref[REF_L0];
+    const double u = st.L - L0;
     double own_z, cross_z, own_y, cross_y;
     bending_stiffness(c, c.EIz, c.shear_z, L0, own_z, cross_z);
     bending_stiffness(c, c.EIy, c.shear_y, L0, own_y, cross_y);
-    const double Miz = own_z * ai + cross_z * aj, Mjz = cross_z * ai + own_z * aj;
-    const double Miy = own_y * ci + cross_y * cj, Mjy = cross_y * ci + own_y * cj;
+    const double Miz = own_z * st.ai + cross_z * st.aj, Mjz = cross_z * st.ai + own_z * st.aj;
+    const double Miy = own_y * st.ci + cross_y * st.cj, Mjy = cross_y * st.ci + own_y * st.cj;
     out.N = axial_stiffness(c, L0) * u;
-    out.T = ((c.model == MODEL_SPRINGS) ? c.kt : c.GJ / L0) * p;
-    out.energy = 0.5 * (out.N * u + ai * Miz + aj * Mjz + ci * Miy + cj * Mjy + p * out.T);
-
-    double g[3], shear[3];
-    for (int k = 0; k < 3; k++) g[k] = -Miz * yi[k] - Mjz * yj[k] + Miy * zi[k] + Mjy * zj[k];
-    const double ge = dot3(g, e);
-    for (int k = 0; k < 3; k++) {
-      shear[k] = (g[k] - ge * e[k]) / L;
-      out.f[k] = -(out.N * e[k] + shear[k]);
-    }
-    out.V = sqrt(dot3(shear, shear));
-
-    double ye[3], ze[3], yz[3], zy[3];
-    cross3(yi, e, ye);
-    cross3(zi, e, ze);
-    cross3(yi, zj, yz);
-    cross3(zi, yj, zy);
-    for (int k = 0; k < 3; k++)
-      out.ti[k] = Miz * ye[k] - Miy * ze[k] + 0.5 * out.T * (yz[k] - zy[k]);
-    cross3(yj, e, ye);
-    cross3(zj, e, ze);
-    cross3(yj, zi, yz);
-    cross3(zj, yi, zy);
-    for (int k = 0; k < 3; k++)
-      out.tj[k] = Mjz * ye[k] - Mjy * ze[k] - 0.5 * out.T * (yz[k] - zy[k]);
-
+    out.T = torsion_stiffness(c, L0) * st.p;
+    out.energy =
+        0.5 * (out.N * u + st.ai * Miz + st.aj * Mjz + st.ci * Miy + st.cj * Mjy + st.p * out.T);
+    out.V = frame_loads(st, out.N, out.T, Miz, Mjz, Miy, Mjy, out.f, out.ti, out.tj);
     const double bi = sqrt((Miy / c.Iy) * (Miy / c.Iy) + (Miz / c.Iz) * (Miz / c.Iz));
     const double bj = sqrt((Mjy / c.Iy) * (Mjy / c.Iy) + (Mjz / c.Iz) * (Mjz / c.Iz));
     out.bend = bi > bj ? bi : bj;
     return out;
+  }
+
+  /* --------------------------------------------------------------------
+     bond damping (keyword damp beta): stiffness-proportional (Rayleigh)
+     damping of the element, the elastic loads of the deformation rates
+     times beta: N_d = beta k_axial du/dt, M_d = beta K dq/dt, mapped to
+     forces and torques as the elastic loads are.  Each measure is
+     unchanged by a rigid motion, so the damping forces form a balanced
+     system (momentum and angular momentum conserved) and vanish under
+     any rigid motion; their power is -beta (k_axial du^2 + dq.K.dq) <= 0.
+     Adds the damping forces and torques; returns the power dissipated.
+  -------------------------------------------------------------------- */
+
+  // what the damping reads: the velocity of j relative to i, and the two
+  // angular velocities (in the element's order)
+  struct BeamRates {
+    double w[3], oi[3], oj[3];
+  };
+
+  MCA_INLINE double planar_damping(const BeamCoeff &c, const double L0, const double dx,
+                                   const double dy, const BeamRates &r, double &fx, double &fy,
+                                   double &ti, double &tj)
+  {
+    const double L = sqrt(dx * dx + dy * dy);
+    const double ex = dx / L, ey = dy / L;
+    const double ud = ex * r.w[0] + ey * r.w[1];
+    const double ad = (ex * r.w[1] - ey * r.w[0]) / L;    // the chord's turn
+    const double qdi = r.oi[2] - ad, qdj = r.oj[2] - ad;
+    double own, cross;
+    bending_stiffness(c, c.EI, c.shear, L0, own, cross);
+    const double Nd = c.beta * axial_stiffness(c, L0) * ud;
+    const double Mdi = c.beta * (own * qdi + cross * qdj);
+    const double Mdj = c.beta * (cross * qdi + own * qdj);
+    const double Vd = (Mdi + Mdj) / L;
+    fx += -Nd * ex - Vd * ey;
+    fy += -Nd * ey + Vd * ex;
+    ti -= Mdi;
+    tj -= Mdj;
+    return Nd * ud + Mdi * qdi + Mdj * qdj;
+  }
+
+  MCA_INLINE double frame_damping(const BeamCoeff &c, const double L0, const FrameState &st,
+                                  const BeamRates &r, double *f, double *ti, double *tj)
+  {
+    // dm/dt of an end's measure: g . (de/dt + e x w_end), de/dt = P w / L;
+    // the twist's: gp . (w_i - w_j)
+    const double ud = dot3(st.e, r.w);
+    double ri[3], rj[3], ew[3], dw[3];
+    cross3(st.e, r.oi, ew);
+    for (int k = 0; k < 3; k++) ri[k] = (r.w[k] - ud * st.e[k]) / st.L + ew[k];
+    cross3(st.e, r.oj, ew);
+    for (int k = 0; k < 3; k++) {
+      rj[k] = (r.w[k] - ud * st.e[k]) / st.L + ew[k];
+      dw[k] = r.oi[k] - r.oj[k];
+    }
+    const double aid = dot3(st.gai, ri), ajd = dot3(st.gaj, rj);
+    const double cid = dot3(st.gci, ri), cjd = dot3(st.gcj, rj);
+    const double pd = dot3(st.gp, dw);
+    double own_z, cross_z, own_y, cross_y;
+    bending_stiffness(c, c.EIz, c.shear_z, L0, own_z, cross_z);
+    bending_stiffness(c, c.EIy, c.shear_y, L0, own_y, cross_y);
+    const double Nd = c.beta * axial_stiffness(c, L0) * ud;
+    const double Td = c.beta * torsion_stiffness(c, L0) * pd;
+    const double Mizd = c.beta * (own_z * aid + cross_z * ajd);
+    const double Mjzd = c.beta * (cross_z * aid + own_z * ajd);
+    const double Miyd = c.beta * (own_y * cid + cross_y * cjd);
+    const double Mjyd = c.beta * (cross_y * cid + own_y * cjd);
+    double fd[3], tid[3], tjd[3];
+    frame_loads(st, Nd, Td, Mizd, Mjzd, Miyd, Mjyd, fd, tid, tjd);
+    for (int k = 0; k < 3; k++) {
+      f[k] += fd[k];
+      ti[k] += tid[k];
+      tj[k] += tjd[k];
+    }
+    return Nd * ud + Td * pd + Mizd * aid + Mjzd * ajd + Miyd * cid + Mjyd * cjd;
   }
 
   /* --------------------------------------------------------------------
@@ -372,17 +503,20 @@ namespace BeamKernels {
   /* --------------------------------------------------------------------
      one bond of either dimension, particles i, j in the order of the
      reference: force on j, torques, energy, and whether it breaks
-     (measure >= 1; 0 for a bond that cannot break)
+     (measure >= 1; 0 for a bond that cannot break: the elastic loads
+     decide), with the damping forces of rates (nullptr: none) and the
+     power they dissipate
   -------------------------------------------------------------------- */
 
   struct BeamBond {
     double f[3], ti[3], tj[3];
-    double energy, measure;
+    double energy, measure, dissipation;
   };
 
   template <int DIM>
   MCA_INLINE BeamBond beam_bond(const BeamCoeff &c, const double *ref, const double *d,
-                                const double *qi, const double *qj, const double strength)
+                                const double *qi, const double *qj, const double strength,
+                                const BeamRates *rates = nullptr)
   {
     BeamBond b;
     if (DIM == 2) {
@@ -396,8 +530,12 @@ namespace BeamKernels {
       b.tj[2] = out.tj;
       b.energy = out.energy;
       b.measure = c.breakable ? break_measure(c, out, strength) : 0.0;
+      b.dissipation = rates
+          ? planar_damping(c, ref[REF_L0], d[0], d[1], *rates, b.f[0], b.f[1], b.ti[2], b.tj[2])
+          : 0.0;
     } else {
-      const BeamForce3D out = beam_force_3d(c, ref, d, qi, qj);
+      const FrameState st = frame_state(ref, d, qi, qj);
+      const BeamForce3D out = beam_force_3d(c, ref, st);
       for (int k = 0; k < 3; k++) {
         b.f[k] = out.f[k];
         b.ti[k] = out.ti[k];
@@ -405,6 +543,7 @@ namespace BeamKernels {
       }
       b.energy = out.energy;
       b.measure = c.breakable ? break_measure(c, out, strength) : 0.0;
+      b.dissipation = rates ? frame_damping(c, ref[REF_L0], st, *rates, b.f, b.ti, b.tj) : 0.0;
     }
     return b;
   }

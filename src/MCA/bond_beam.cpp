@@ -28,6 +28,7 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -43,7 +44,7 @@ static const char FIX_ID[] = "BEAM_STATE";
 
 BondBeam::BondBeam(LAMMPS *_lmp) :
     Bond(_lmp), coeffs(nullptr), fix_state(nullptr), L0_max(0.0), nrec(REC_REF + NREF_2D),
-    built_at(-1), built_n(0), breaking(0), records(nullptr), maxrecords(0)
+    built_at(-1), built_n(0), breaking(0), damping(0), records(nullptr), maxrecords(0)
 {
 }
 
@@ -77,13 +78,30 @@ void BondBeam::settings(int narg, char **arg)
   if (narg > 0)
     error->all(FLERR, "Illegal bond_style beam command: unexpected argument '{}' (no settings)",
                arg[0]);
+  // the fix (and its scalar, for thermo output) from here on when the
+  // bonded atoms exist already (after read_data or read_restart, whose
+  // per-atom records it then restores); otherwise at the first run
+  if (atom->natoms > 0 && atom->bond_per_atom > 0 && MCAAtomFields::find(atom)) find_state();
 }
 
 /* ----------------------------------------------------------------------
-   bond_coeff N E A I [shear G ks] [poisson nu] [section Iy Iz J]
+   the internal fix with the reference states, made if there is none
+------------------------------------------------------------------------- */
+
+void BondBeam::find_state()
+{
+  fix_state = dynamic_cast<FixBeamState *>(MCACompat::fix_by_id(modify, FIX_ID));
+  if (!fix_state) {
+    modify->add_fix(fmt::format("{} all BEAM_STATE", FIX_ID), 0);
+    fix_state = dynamic_cast<FixBeamState *>(MCACompat::fix_by_id(modify, FIX_ID));
+  }
+}
+
+/* ----------------------------------------------------------------------
+   bond_coeff N E A I [shear G ks] [poisson nu] [section Iy Iz J] [damp beta]
                       [break sigma0 tau0] [bending c]
                       [mohr phi] [scatter uniform w seed | weibull m seed]
-   bond_coeff N shearbeam kn kr [twist kt] [break N0 V0] [mohr phi] [scatter ...]
+   bond_coeff N shearbeam kn kr [twist kt] [damp beta] [break N0 V0] [mohr phi] [scatter ...]
    (3-D: a beam needs G, from shear or poisson; a shear beam needs twist)
 ------------------------------------------------------------------------- */
 
@@ -139,7 +157,8 @@ void BondBeam::coeff(int narg, char **arg)
       need(2, "shear (G ks)");
       only_beam("shear (Timoshenko)");
       if (c.G > 0.0)
-        error->all(FLERR, "Bond_coeff beam: the shear modulus is given twice (shear, poisson)");
+        error->all(FLERR,
+                   "Bond_coeff beam: the shear modulus is given twice (by shear or poisson)");
       c.G = positive("shear G", arg[iarg + 1]);
       c.ks = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       if (c.ks <= 0.0 || c.ks > 1.0)
@@ -147,9 +166,11 @@ void BondBeam::coeff(int narg, char **arg)
       iarg += 3;
     } else if (word == "poisson") {
       need(1, "poisson (nu)");
+      only_3d("poisson (the torsion's G)");
       only_beam("poisson");
       if (c.G > 0.0)
-        error->all(FLERR, "Bond_coeff beam: the shear modulus is given twice (shear, poisson)");
+        error->all(FLERR,
+                   "Bond_coeff beam: the shear modulus is given twice (by shear or poisson)");
       c.nu = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (c.nu <= -1.0 || c.nu >= 0.5)
         error->all(FLERR, "Bond_coeff beam: poisson nu = {} must be in (-1, 0.5)", c.nu);
@@ -173,6 +194,10 @@ void BondBeam::coeff(int narg, char **arg)
                    "torsion is G J / L0");
       c.kt = positive("twist kt", arg[iarg + 1]);
       twist = true;
+      iarg += 2;
+    } else if (word == "damp") {
+      need(1, "damp (beta)");
+      c.beta = positive("damp beta", arg[iarg + 1]);
       iarg += 2;
     } else if (word == "break") {
       need(2, "break (sigma0 tau0)");
@@ -222,7 +247,7 @@ void BondBeam::coeff(int narg, char **arg)
     } else
       error->all(FLERR,
                  "Bond_coeff beam: unknown keyword '{}' (allowed: shear, poisson, section, twist, "
-                 "break, bending, mohr, scatter)",
+                 "damp, break, bending, mohr, scatter)",
                  word);
   }
   if (!c.breakable && (bending || mohr || c.scatter))
@@ -252,19 +277,21 @@ void BondBeam::init_style()
                atom->atom_style);
   nrec = REC_REF + nref(domain->dimension);
 
-  fix_state = dynamic_cast<FixBeamState *>(MCACompat::fix_by_id(modify, FIX_ID));
-  if (!fix_state) {
-    // made during the run's init, before Modify's, which initialises it
-    modify->add_fix(fmt::format("{} all BEAM_STATE", FIX_ID), 0);
-    fix_state = dynamic_cast<FixBeamState *>(MCACompat::fix_by_id(modify, FIX_ID));
-  }
+  // (made here, during the run's init, before Modify's, which initialises it)
+  find_state();
   built_at = -1;
 
   estimate_longest_bond();
 
-  breaking = 0;
-  for (int i = 1; i <= atom->nbondtypes; i++)
+  breaking = damping = 0;
+  for (int i = 1; i <= atom->nbondtypes; i++) {
     if (coeffs[i].breakable) breaking = 1;
+    if (coeffs[i].beta > 0.0) damping = 1;
+  }
+  if (damping && !comm->ghost_velocity)
+    error->all(FLERR,
+               "Bond style beam with damp requires comm_modify vel yes (the damping reads the "
+               "velocities of the ghost atoms)");
   // a broken bond leaves the bond arrays but not the special lists: the
   // pair style must treat bonded pairs as any other (BPM's overlay/pair yes)
   if (breaking && force->pair && (force->special_lj[1] != 1.0 || force->special_coul[1] != 1.0))
@@ -382,8 +409,11 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   double **f = atom->f;
   double **torque = atom->torque;
   double **quat = fix_state->avec->quat;
+  double **v = atom->v;
+  double **omega = atom->omega;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
+  double dissipated = 0.0;
 
   for (int n = 0; n < nlist; n++) {
     const int type = bondlist[n][2];
@@ -394,8 +424,18 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
     const int i = swap ? bondlist[n][1] : bondlist[n][0];
     const int j = swap ? bondlist[n][0] : bondlist[n][1];
     const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], DIM == 3 ? x[j][2] - x[i][2] : 0.0};
-    const BeamBond out =
-        beam_bond<DIM>(coeffs[type], rec + REC_REF, d, quat[i], quat[j], rec[REC_STRENGTH]);
+    const BeamCoeff &c = coeffs[type];
+    BeamBond out;
+    if (c.beta > 0.0) {
+      BeamRates rates;
+      for (int k = 0; k < 3; k++) {
+        rates.w[k] = v[j][k] - v[i][k];
+        rates.oi[k] = omega[i][k];
+        rates.oj[k] = omega[j][k];
+      }
+      out = beam_bond<DIM>(c, rec + REC_REF, d, quat[i], quat[j], rec[REC_STRENGTH], &rates);
+    } else
+      out = beam_bond<DIM>(c, rec + REC_REF, d, quat[i], quat[j], rec[REC_STRENGTH]);
     if (out.measure >= 1.0) {
       bondlist[n][2] = 0;
       broken.push_back(bondlist[n][0]);
@@ -423,7 +463,10 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
       torque[j][2] += out.tj[2];
     }
     if (evflag) tally(i, j, nlocal, newton_bond, out.energy, out.f, d);
+    if (damping) dissipated += bond_share(newton_bond, i, j, nlocal) * out.dissipation;
   }
+  // (a step taken: not the forces of a run's setup)
+  if (damping && !update->setupflag) fix_state->dissipated.local += dissipated * update->dt;
 }
 
 /* ----------------------------------------------------------------------
@@ -506,14 +549,33 @@ double BondBeam::equilibrium_distance(int /*type*/)
 
 /* ---------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   the coefficient records behind a tag: the layout's version and size
+   (a file of another layout is refused, not read askew)
+------------------------------------------------------------------------- */
+
+static constexpr int RESTART_TAG = 0x6265616d;    // "beam"
+static constexpr int RESTART_VERSION = 2;         // 2: 3-D sections and damping
+
 void BondBeam::write_restart(FILE *fp)
 {
+  const int header[3] = {RESTART_TAG, RESTART_VERSION, static_cast<int>(sizeof(BeamCoeff))};
+  fwrite(header, sizeof(int), 3, fp);
   fwrite(&coeffs[1], sizeof(BeamCoeff), atom->nbondtypes, fp);
 }
 
 void BondBeam::read_restart(FILE *fp)
 {
   allocate();
+  int header[3] = {0, 0, 0};
+  if (comm->me == 0) utils::sfread(FLERR, header, sizeof(int), 3, fp, nullptr, error);
+  MPI_Bcast(header, 3, MPI_INT, 0, world);
+  if (header[0] != RESTART_TAG || header[1] != RESTART_VERSION ||
+      header[2] != static_cast<int>(sizeof(BeamCoeff)))
+    error->all(FLERR,
+               "Bond style beam: the restart file holds the coefficients in another layout "
+               "(an earlier version of the style); define them again with bond_style beam and "
+               "bond_coeff after read_restart");
   if (comm->me == 0)
     utils::sfread(FLERR, &coeffs[1], sizeof(BeamCoeff), atom->nbondtypes, fp, nullptr, error);
   MPI_Bcast(&coeffs[1], atom->nbondtypes * sizeof(BeamCoeff), MPI_CHAR, 0, world);
@@ -535,6 +597,7 @@ void BondBeam::write_data(FILE *fp)
       else
         line += fmt::format(" section {:.17g} {:.17g} {:.17g}", c.Iy, c.Iz, c.J);
     }
+    if (c.beta > 0.0) line += fmt::format(" damp {:.17g}", c.beta);
     if (c.breakable) line += fmt::format(" break {:.17g} {:.17g}", c.sigma0, c.tau0);
     if (c.fibre > 0.0) line += fmt::format(" bending {:.17g}", c.fibre);
     if (c.mohr) line += fmt::format(" mohr {:.17g}", c.phi_deg);
@@ -565,7 +628,8 @@ double BondBeam::single(int type, double /*rsq*/, int i, int j, double &fforce)
   double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
   MCACompat::minimum_image(domain, d);
   if (domain->dimension == 3) {
-    const BeamForce3D out = beam_force_3d(coeffs[type], ref, d, quat[lo], quat[hi]);
+    const BeamForce3D out =
+        beam_force_3d(coeffs[type], ref, frame_state(ref, d, quat[lo], quat[hi]));
     fforce = -out.N / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     return out.energy;
   }

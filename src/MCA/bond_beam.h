@@ -62,7 +62,7 @@ class BondBeam : public Bond {
   int nrec;         // values per record: REC_REF + the reference state of the dimension
 
   // the records of every entry of a bond list (i1, i2, type) into
-  // records[n * NREC], when the list was built again since the last call;
+  // records[n * nrec], when the list was built again since the last call;
   // entry (n, k) of the list is list[n * row_stride + k * column_stride]
   bigint built_at;
   int built_n;
@@ -72,10 +72,13 @@ class BondBeam : public Bond {
 
   // breaking: any type breakable; bonds broken this step (entries i1 i2)
   int breaking;
+  // damping: any type with damp (reads v and omega; the power goes to BEAM_STATE's tally)
+  int damping;
   void remove_broken(int nbroken, const int *pairs);
 
   void allocate();
   void estimate_longest_bond();
+  void find_state();
 
  private:
   double *records;

@@ -43,6 +43,11 @@ FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Fix BEAM_STATE requires an atom style with bonds");
 
   restart_peratom = 1;
+  restart_global = 1;
+  scalar_flag = 1;
+  global_freq = 1;
+  extscalar = 1;
+  ecouple_flag = 1;
   comm_forward = 4;
   maxexchange = atom->bond_per_atom * nslot;
   // under KOKKOS: syncs only the orientations, itself (send_orientations)
@@ -83,6 +88,26 @@ void FixBeamState::init()
                "Bond style beam: the bonds per atom changed from {} to {} after the beams "
                "were defined",
                maxbond, atom->bond_per_atom);
+}
+
+/* ----------------------------------------------------------------------
+   the energy the bonds' damping took out so far, all ranks (ecouple);
+   kept in restart files
+------------------------------------------------------------------------- */
+
+double FixBeamState::compute_scalar()
+{
+  return dissipated.total(world);
+}
+
+void FixBeamState::write_restart(FILE *fp)
+{
+  dissipated.write_restart(fp, world, comm->me);
+}
+
+void FixBeamState::restart(char *buf)
+{
+  dissipated.restart(buf, comm->me);
 }
 
 /* ----------------------------------------------------------------------

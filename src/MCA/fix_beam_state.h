@@ -22,6 +22,7 @@ FixStyle(BEAM_STATE,FixBeamState);
 
 #include "beam_kernels.h"
 #include "fix.h"
+#include "mca_damping_fix.h"
 
 namespace LAMMPS_NS {
 
@@ -33,7 +34,8 @@ namespace LAMMPS_NS {
    replaced (delete_bonds, create_bonds) is recognised as new.  Slots move
    with their atoms and are written to restart files.  The fix also sends
    the orientations of the owned atoms to their ghosts before the forces
-   (atom_style mca sends them only with the ghost shells).
+   (atom_style mca sends them only with the ghost shells).  Its scalar is
+   the energy the bonds' damping (bond_coeff ... damp) has taken out.
 ------------------------------------------------------------------------- */
 
 class FixBeamState : public Fix {
@@ -48,6 +50,10 @@ class FixBeamState : public Fix {
   void setup_pre_force(int) override;
   void pre_force(int) override;
   void min_pre_force(int) override;
+
+  double compute_scalar() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
 
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
@@ -77,6 +83,9 @@ class FixBeamState : public Fix {
 
   // a bond style that has the orientations on another memory space
   class MCAAtomFields *avec;
+
+  // the energy the bonds' damping took out so far (the fix's scalar)
+  MCAEnergyTally dissipated;
 
  private:
   int maxbond;       // bond slots per atom

@@ -188,6 +188,10 @@ void MCASet::command(int narg, char **arg)
   const bool turn = values[TURNX].given || values[TURNY].given || values[TURNZ].given;
   if (turn && values[ANGLE].given)
     error->all(FLERR, "mca_set: use either angle (set) or turnx/turny/turnz (turn by), not both");
+  if (domain->dimension == 2 && (values[TURNX].given || values[TURNY].given))
+    error->all(FLERR,
+               "mca_set: turnx and turny need dimension 3 (a 2-D particle turns about z: "
+               "angle or turnz)");
 
   // evaluate atom-style variables over all local atoms
 

@@ -357,7 +357,7 @@ thermo_modify   norm no format float %.17g
 SIGMA0, TAU0, FIBRE = 0.2, 0.1, 0.05
 
 
-def threshold_probe(build, directory, move, below, above):
+def threshold_probe(build, directory, move, below, above, extra_args=()):
     """Two particles bonded along x (a 3-D section with I_y != I_z); the
     bond must hold at `below` and break at `above`; returns the bond counts."""
     data = beam_data(directory / "pair.data", [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0)], [(0, 1)],
@@ -370,9 +370,84 @@ run             0 post no
 """
     for value in (below, above):
         script += move(value) + "run 0 post no\nprint \"BONDS $(bonds)\"\n"
-    result = build.run(script, directory)
+    result = build.run(script, directory, extra_args=extra_args)
     return [int(line.split()[1]) for line in result.stdout.splitlines()
             if line.startswith("BONDS")]
+
+
+def turn_first(axis):
+    """Commands that turn the first particle by an angle (radians) about an axis."""
+    return lambda t: (f"group first id 1\nmca_set first angle 0\n"
+                      f"mca_set first turn{axis} {math.degrees(t):.17g}\ngroup first delete\n")
+
+
+def bending_measure(theta, inertia):
+    """The elliptic measure of the bond when its first end is turned by
+    theta about the section's z (I_z) or y (I_y) axis, the other end and
+    the chord unchanged: a = 2 tan(theta/2), M_i = 4 EI a / L, M_j = 2 EI a / L,
+    sigma = fibre M_i / I, and the shear force |2 M_i / (1 + cos theta) + M_j| / L
+    (the gradients of the two ends' measures across the chord)."""
+    a = 2 * math.tan(theta / 2)
+    mi, mj = 4 * E_ * inertia * a, 2 * E_ * inertia * a
+    sigma = FIBRE * mi / inertia
+    tau = abs(2 * mi / (1 + math.cos(theta)) + mj) / A_
+    return (sigma / SIGMA0) ** 2 + (tau / TAU0) ** 2
+
+
+def threshold(measure):
+    lo, hi = 0.0, 1.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if measure(mid) < 1 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+@pytest.mark.parametrize("axis, inertia", [("z", IZ), ("y", IY)])
+def test_bending_breaks_on_the_ellipse_of_its_plane(build, tmp_path, axis, inertia):
+    """Turning one end about the section's z axis bends with I_z, about y
+    with I_y: each breaks at its own analytic angle (the other plane's
+    would be 11 % off)."""
+    theta = threshold(lambda t: bending_measure(t, inertia))
+    other = threshold(lambda t: bending_measure(t, IY + IZ - inertia))
+    print(f"about {axis}: breaks at {theta:.12f} rad (with the other I: {other:.12f})")
+    assert abs(other / theta - 1) > 1e-3
+    assert threshold_probe(build, tmp_path, turn_first(axis), theta * (1 - 1e-9),
+                           theta * (1 + 1e-9)) == [1, 0]
+
+
+def test_kokkos_breaks_at_the_same_thresholds(tmp_path):
+    kk = mcatest.kokkos_build()
+    theta = threshold(lambda t: bending_measure(t, IZ))
+    assert threshold_probe(kk, tmp_path / "bend", turn_first("z"), theta * (1 - 1e-9),
+                           theta * (1 + 1e-9), extra_args=mcatest.kokkos_args(1)) == [1, 0]
+    p_star = 2 * math.atan(0.5 * TAU0 / (FIBRE * G_))
+    assert threshold_probe(kk, tmp_path / "twist", turn_first("x"), -p_star * (1 - 1e-9),
+                           -p_star * (1 + 1e-9), extra_args=mcatest.kokkos_args(1)) == [1, 0]
+
+
+def test_large_turns_stiffen_up_to_a_half_turn(build, tmp_path):
+    """An end turned by theta about z: energy 2 own_z tan^2(theta/2)
+    (own_z = 4 E I_z / L), to 1e-12, rising without bound towards a half
+    turn (a measure by the sine would fall back to 0 there)."""
+    data = beam_data(tmp_path / "pair.data", [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0)], [(0, 1)],
+                     ((-2, 3), (-2, 2), (-2, 2)))
+    angles = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.1]
+    script = header(data) + f"""
+bond_style      beam
+bond_coeff      1 {BEAM}
+thermo_style    custom step ebond
+thermo_modify   norm no format float %.17g
+run             0 post no
+"""
+    for t in angles:
+        script += turn_first("z")(t) + "run 0 post no\nprint \"EBOND $(ebond:%.17g)\"\n"
+    out = build.run(script, tmp_path).stdout
+    energies = [float(line.split()[1]) for line in out.splitlines() if line.startswith("EBOND")]
+    own = 4 * E_ * IZ
+    ref = [2 * own * math.tan(t / 2) ** 2 for t in angles]
+    print("energies", " ".join(f"{e:.6g}" for e in energies))
+    assert energies == pytest.approx(ref, rel=1e-12)
+    assert all(b > a for a, b in zip(energies, energies[1:]))
 
 
 def test_tension_and_torsion_break_at_their_strengths(build, tmp_path):
@@ -380,9 +455,9 @@ def test_tension_and_torsion_break_at_their_strengths(build, tmp_path):
     pull = lambda u: f"set atom 2 x {1.0 + u:.17g}\n"
     assert threshold_probe(build, tmp_path / "pull", pull, u_star * (1 - 1e-9),
                            u_star * (1 + 1e-9)) == [1, 0]
-    # the second particle twisted by p about x: T = GJ sin(p) / L0 (the
-    # measure is the sine), tau = fibre T / J = tau0 at sin(p) = tau0 / (fibre G)
-    p_star = math.asin(TAU0 / (FIBRE * G_))
+    # the second particle twisted by p about x: T = GJ 2 tan(p/2) / L0,
+    # tau = fibre T / J = tau0 at 2 tan(p/2) = tau0 / (fibre G)
+    p_star = 2 * math.atan(0.5 * TAU0 / (FIBRE * G_))
     twist = lambda p: f"group end id 2\nmca_set end angle 0\n" \
         f"mca_set end turnx {math.degrees(p):.17g}\ngroup end delete\n"
     assert threshold_probe(build, tmp_path / "twist", twist, p_star * (1 - 1e-9),
@@ -396,9 +471,12 @@ def test_tension_and_torsion_break_at_their_strengths(build, tmp_path):
 def test_data_file_keeps_3d_coefficients(build, tmp_path):
     sites, bonds = cluster()
     data = beam_data(tmp_path / "cluster.data", sites, bonds, ((-4, 4),) * 3)
+    data.write_text(data.read_text().replace("1 bond types", "2 bond types"))
     script = header(data) + f"""
+comm_modify     vel yes
 bond_style      beam
-bond_coeff      1 {TIMOSHENKO} break 0.2 0.1 bending 0.05
+bond_coeff      1 {TIMOSHENKO} break 0.2 0.1 bending 0.05 damp 0.001
+bond_coeff      2 {BEAM}
 write_data      first.data
 """
     build.run(script, tmp_path)
@@ -406,16 +484,21 @@ write_data      first.data
     line = re.search(r"Bond Coeffs.*?\n\n(.*?)\n", first, re.S).group(1)
     print(line)
     assert f"section {IY:.17g} {IZ:.17g} {J_:.17g}" in line
+    assert "damp 0.001" in line
+    second_type = re.search(r"Bond Coeffs.*?\n\n.*?\n(.*?)\n", first, re.S).group(1)
+    assert f"poisson {NU:.17g}" in second_type
     again = """
 units           lj
 atom_style      mca
 bond_style      beam
 read_data       first.data
+comm_modify     vel yes
 write_data      second.data
 """
     build.run(again, tmp_path)
     second = (tmp_path / "second.data").read_text()
-    assert re.search(r"Bond Coeffs.*?\n\n(.*?)\n", second, re.S).group(1) == line
+    assert re.search(r"Bond Coeffs.*?\n\n(.*?\n.*?)\n", second, re.S).group(1) == \
+        re.search(r"Bond Coeffs.*?\n\n(.*?\n.*?)\n", first, re.S).group(1)
 
 
 BAD_3D = [
@@ -426,9 +509,32 @@ BAD_3D = [
     ("poisson", "bond_coeff 1 1.0 0.1 0.001 poisson 0.5", r"poisson nu = 0.5 must be in"),
     ("twice", "bond_coeff 1 1.0 0.1 0.001 poisson 0.3 shear 1 0.8",
      r"the shear modulus is given twice"),
+    ("damp", "bond_coeff 1 1.0 0.1 0.001 poisson 0.3 damp -1", r"damp beta = -1 must be > 0"),
     ("twist on beam", "bond_coeff 1 1.0 0.1 0.001 poisson 0.3 twist 1",
      r"twist \(a torsion spring\) applies to shearbeam"),
 ]
+
+
+BAD_2D = [
+    ("section in 2-D", "bond_coeff 1 1.0 0.1 0.001 section 0.1 0.1 0.1",
+     r"section applies to 3-D beams only"),
+    ("poisson in 2-D", "bond_coeff 1 1.0 0.1 0.001 poisson 0.3",
+     r"poisson \(the torsion's G\) applies to 3-D beams only"),
+    ("twist in 2-D", "bond_coeff 1 shearbeam 1 1 twist 1", r"twist applies to 3-D beams only"),
+    ("turnx in 2-D", "mca_set all turnx 10", r"turnx and turny need dimension 3"),
+]
+
+
+@pytest.mark.parametrize("case", BAD_2D, ids=[c[0] for c in BAD_2D])
+def test_3d_keywords_in_2d_give_clear_errors(build, tmp_path, case):
+    import test_bond_beam as beam2d
+    _, line, message = case
+    data = beam2d.beam_data(tmp_path / "pair.data", [(0.0, 0.0), (1.0, 0.0)], [(0, 1)],
+                            ((-2, 3), (-2, 2)))
+    result = build.run(beam2d.header(data) + "bond_style beam\n" + line + "\nrun 0\n",
+                       tmp_path, check=False)
+    out = result.stdout + result.stderr
+    assert result.returncode != 0 and re.search(message, out), out[-800:]
 
 
 @pytest.mark.parametrize("case", BAD_3D, ids=[c[0] for c in BAD_3D])
