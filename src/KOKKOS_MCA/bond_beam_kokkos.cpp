@@ -55,6 +55,7 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
   MCAKokkos::int_2d<DeviceType> broken;    // entries (i1, i2, n) broken this step
   Kokkos::View<int, DeviceType> nbroken;
   int nlocal, newton_bond;
+  int damp_now;    // damping in dynamics only
   int eflag_global, eflag_atom, vflag_global, vflag_atom;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int n, EV_FLOAT &ev) const
@@ -73,7 +74,7 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
     const double d[3] = {x(j, 0) - x(i, 0), x(j, 1) - x(i, 1), DIM == 3 ? x(j, 2) - x(i, 2) : 0.0};
     const BeamCoeff &c = coeff(type);
     BeamBond out;
-    if (c.beta > 0.0) {
+    if (damp_now && c.beta > 0.0) {
       BeamRates rates;
       for (int k = 0; k < 3; k++) {
         rates.w[k] = v(j, k) - v(i, k);
@@ -117,20 +118,20 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
     // BondBeam::tally
     const double share = bond_share(newton_bond, i, j, nlocal);
     if (eflag_global) ev.evdwl += share * out.energy;
-    ev.ecoul += share * out.dissipation;    // the damping's power
+    if (damp_now) ev.ecoul += share * out.dissipation;    // the damping's power
     if (eflag_atom) {
       if (own_i) eatom(i) += 0.5 * out.energy;
       if (own_j) eatom(j) += 0.5 * out.energy;
     }
     if (vflag_global || vflag_atom) {
-      double v[6];
-      virial_terms(d, out.f, v);
+      double vir[6];
+      virial_terms(d, out.f, vir);
       if (vflag_global)
-        for (int k = 0; k < 6; k++) ev.v[k] += share * v[k];
+        for (int k = 0; k < 6; k++) ev.v[k] += share * vir[k];
       if (vflag_atom)
         for (int k = 0; k < 6; k++) {
-          if (own_i) vatom(i, k) += 0.5 * v[k];
-          if (own_j) vatom(j, k) += 0.5 * v[k];
+          if (own_i) vatom(i, k) += 0.5 * vir[k];
+          if (own_j) vatom(j, k) += 0.5 * vir[k];
         }
     }
   }
@@ -249,6 +250,7 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
   BeamForceKernel<DeviceType, DIM> kernel;
   kernel.x = atomKK->k_x.template view<DeviceType>();
   if (damping) {
+    // (bound whenever a type damps; read in dynamics only)
     kernel.v = atomKK->k_v.template view<DeviceType>();
     kernel.omega = atomKK->k_omega.template view<DeviceType>();
   }
@@ -276,6 +278,7 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
     Kokkos::deep_copy(tally.k_vatom.template view<DeviceType>(), 0.0);
   }
   kernel.nlocal = atom->nlocal;
+  kernel.damp_now = damping && update->whichflag == 1;
   kernel.newton_bond = force->newton_bond;
   kernel.eflag_global = eflag_global;
   kernel.eflag_atom = eflag_atom;
@@ -288,7 +291,7 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
   if (eflag_global) energy += ev.evdwl;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += ev.v[k];
-  if (damping && !update->setupflag) fix_state->dissipated.local += ev.ecoul * update->dt;
+  if (kernel.damp_now && !update->setupflag) fix_state->dissipated.local += ev.ecoul * update->dt;
 }
 
 namespace LAMMPS_NS {

@@ -78,10 +78,6 @@ void BondBeam::settings(int narg, char **arg)
   if (narg > 0)
     error->all(FLERR, "Illegal bond_style beam command: unexpected argument '{}' (no settings)",
                arg[0]);
-  // the fix (and its scalar, for thermo output) from here on when the
-  // bonded atoms exist already (after read_data or read_restart, whose
-  // per-atom records it then restores); otherwise at the first run
-  if (atom->natoms > 0 && atom->bond_per_atom > 0 && MCAAtomFields::find(atom)) find_state();
 }
 
 /* ----------------------------------------------------------------------
@@ -292,6 +288,10 @@ void BondBeam::init_style()
     error->all(FLERR,
                "Bond style beam with damp requires comm_modify vel yes (the damping reads the "
                "velocities of the ghost atoms)");
+  if (damping && utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR,
+               "Bond style beam with damp does not support run_style respa (its energy tally "
+               "counts one bond evaluation per step)");
   // a broken bond leaves the bond arrays but not the special lists: the
   // pair style must treat bonded pairs as any other (BPM's overlay/pair yes)
   if (breaking && force->pair && (force->special_lj[1] != 1.0 || force->special_coul[1] != 1.0))
@@ -413,6 +413,8 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   double **omega = atom->omega;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
+  // damping in dynamics only (a minimizer's forces are the energy's gradient)
+  const bool damp_now = damping && update->whichflag == 1;
   double dissipated = 0.0;
 
   for (int n = 0; n < nlist; n++) {
@@ -426,7 +428,7 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
     const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], DIM == 3 ? x[j][2] - x[i][2] : 0.0};
     const BeamCoeff &c = coeffs[type];
     BeamBond out;
-    if (c.beta > 0.0) {
+    if (damp_now && c.beta > 0.0) {
       BeamRates rates;
       for (int k = 0; k < 3; k++) {
         rates.w[k] = v[j][k] - v[i][k];
@@ -463,10 +465,10 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
       torque[j][2] += out.tj[2];
     }
     if (evflag) tally(i, j, nlocal, newton_bond, out.energy, out.f, d);
-    if (damping) dissipated += bond_share(newton_bond, i, j, nlocal) * out.dissipation;
+    if (damp_now) dissipated += bond_share(newton_bond, i, j, nlocal) * out.dissipation;
   }
   // (a step taken: not the forces of a run's setup)
-  if (damping && !update->setupflag) fix_state->dissipated.local += dissipated * update->dt;
+  if (damp_now && !update->setupflag) fix_state->dissipated.local += dissipated * update->dt;
 }
 
 /* ----------------------------------------------------------------------
@@ -574,8 +576,8 @@ void BondBeam::read_restart(FILE *fp)
       header[2] != static_cast<int>(sizeof(BeamCoeff)))
     error->all(FLERR,
                "Bond style beam: the restart file holds the coefficients in another layout "
-               "(an earlier version of the style); define them again with bond_style beam and "
-               "bond_coeff after read_restart");
+               "(written by an earlier version of the style, which can convert it to a data "
+               "file: write_data there, read_data here)");
   if (comm->me == 0)
     utils::sfread(FLERR, &coeffs[1], sizeof(BeamCoeff), atom->nbondtypes, fp, nullptr, error);
   MPI_Bcast(&coeffs[1], atom->nbondtypes * sizeof(BeamCoeff), MPI_CHAR, 0, world);

@@ -43,6 +43,7 @@ FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Fix BEAM_STATE requires an atom style with bonds");
 
   restart_peratom = 1;
+  create_attribute = 1;
   restart_global = 1;
   scalar_flag = 1;
   global_freq = 1;
@@ -278,6 +279,13 @@ void FixBeamState::grow_arrays(int nmax)
   memory->grow(state, nmax, ncol, "beam:state");
   for (int i = old; i < nmax; i++) memset(state[i], 0, ncol * sizeof(double));
   nmax_old = nmax;
+}
+
+// an atom created (create_atoms, read_data add) in a row that a deleted
+// atom left: no slots of that atom's bonds
+void FixBeamState::set_arrays(int i)
+{
+  memset(state[i], 0, (maxbond > 0 ? maxbond : 1) * nslot * sizeof(double));
 }
 
 void FixBeamState::copy_arrays(int i, int j, int /*delflag*/)

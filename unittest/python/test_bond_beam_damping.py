@@ -17,7 +17,8 @@ as the scalar of the internal fix BEAM_STATE (doc/src/bond_beam.rst).
 * kk equals the CPU style (forces and the tally), and a restart keeps the
   tally (the restarted run's first forces see the full-step velocities:
   it follows the uninterrupted run to O(beta dt), not to round-off); bad
-  input: damp <= 0, damp without comm_modify vel yes.
+  input: damp <= 0, damp without comm_modify vel yes, damp with respa;
+* a minimization sees the elastic forces only and tallies nothing.
 """
 
 import math
@@ -110,7 +111,8 @@ timestep        {dt}
 thermo_style    custom step pe ke c_rke f_BEAM_STATE v_etot
 thermo_modify   norm no format float %.17g
 thermo          {max(steps // 50, 1)}
-dump            d all custom {steps} traj.dump id x y z vx vy vz omegax omegay omegaz fx fy fz
+dump            d all custom {steps} traj.dump id x y z vx vy vz omegax omegay omegaz fx fy fz &
+                tqx tqy tqz
 dump_modify     d format float %.17g
 """ + (tail or f"run {steps}\n")
     build.run(script, directory, extra_args=extra_args)
@@ -181,7 +183,9 @@ def test_kokkos_damping_matches_the_cpu_style(tmp_path, dim):
     for mode, extra in (("cpu", ()), ("kk", mcatest.kokkos_args(1))):
         thermo[mode], s = balance_run(kk, tmp_path / mode, dim, 0.004, steps, extra_args=extra)
         snaps[mode] = s[-1]
-    names = ["x", "y", "z", "vx", "vy", "vz", "omegaz", "fx", "fy"]
+    names = ["x", "y", "vx", "vy", "omegaz", "fx", "fy", "tqz"]
+    if dim == 3:
+        names += ["z", "vz", "omegax", "omegay", "fz", "tqx", "tqy"]
     diff = max(np.abs(snaps["kk"][c] - snaps["cpu"][c]).max()
                / max(np.abs(snaps["cpu"][c]).max(), 1e-300) for c in names)
     tally = abs(thermo["kk"]["f_BEAM_STATE"][-1] / thermo["cpu"]["f_BEAM_STATE"][-1] - 1)
@@ -203,6 +207,8 @@ bond_coeff      1 100.0 0.1 0.001 shear 40.0 0.8333333333333334 damp 0.01
 fix             1 all nve/mca
 fix             2 all enforce2d
 timestep        0.004
+# (the internal fix is made at the first run after read_restart)
+run             0 post no
 thermo_style    custom step f_BEAM_STATE
 thermo_modify   norm no format float %.17g
 run             {steps // 2}
@@ -218,11 +224,38 @@ run             {steps // 2}
     assert b == pytest.approx(a, rel=1e-4)
 
 
+def test_minimize_neither_damps_nor_tallies(build, tmp_path):
+    """Damping acts in dynamics only: a minimization of a deformed patch whose
+    particles move reaches the elastic minimum (forces below 1e-8) and
+    leaves the tally at 0."""
+    sites, bonds = beam2d.hex_patch()
+    data = beam2d.beam_data(tmp_path / "patch.data", sites, bonds, ((-6, 6), (-6, 6)))
+    script = beam2d.header(data) + """
+comm_modify     vel yes
+bond_style      beam
+bond_coeff      1 100.0 0.1 0.001 damp 0.01
+""" + beam2d.DEFORM + """
+velocity        all create 1.0 4321 loop geom
+fix             2 all enforce2d
+thermo_style    custom step pe fmax f_BEAM_STATE
+thermo_modify   norm no format float %.17g
+min_style       fire
+minimize        0.0 1.0e-9 20000 40000
+"""
+    build.run(script, tmp_path)
+    thermo = mcatest.read_thermo(tmp_path / "log.lammps")
+    print(f"after minimize: fmax {thermo['Fmax'][-1]:.1e}, tally {thermo['f_BEAM_STATE'][-1]}")
+    assert thermo["f_BEAM_STATE"][-1] == 0.0
+    assert thermo["Fmax"][-1] < 1e-8
+
+
 BAD = [
     ("zero", "comm_modify vel yes\nbond_coeff 1 1.0 0.1 0.001 damp 0",
      r"Bond_coeff beam: damp beta = 0 must be > 0"),
     ("no ghost velocities", "bond_coeff 1 1.0 0.1 0.001 damp 0.1",
      r"with damp requires comm_modify vel yes"),
+    ("respa", "comm_modify vel yes\nbond_coeff 1 1.0 0.1 0.001 damp 0.1\nrun_style respa 2 2",
+     r"with damp does not support run_style respa"),
 ]
 
 
