@@ -87,19 +87,19 @@ def test_bonded_pair_is_a_damped_oscillator(build, tmp_path):
     assert thermo["f_BEAM_STATE"][-1] > 0.5 * balance[0]
 
 
-def balance_run(build, directory, dim, dt, steps, extra_args=(), tail=""):
+def balance_run(build, directory, dim, dt, steps, extra_args=(), tail="", nprocs=1, newton="on"):
     """A deformed patch (2-D) or cluster (3-D) with damped bonds in NVE:
     thermo pe, ke, rotational ke (J = 0.1) and the tally; the last state."""
     if dim == 2:
         sites, bonds = beam2d.hex_patch()
         data = beam2d.beam_data(directory / "patch.data", sites, bonds, ((-6, 6), (-6, 6)))
-        script = beam2d.header(data) + "comm_modify vel yes\nbond_style beam\n" \
+        script = beam2d.header(data, newton=newton) + "comm_modify vel yes\nbond_style beam\n" \
             "bond_coeff 1 100.0 0.1 0.001 shear 40.0 0.8333333333333334 damp 0.01\n" \
             + beam2d.DEFORM + "fix 2 all enforce2d\n"
     else:
         sites, bonds = beam3d.cluster()
         data = beam3d.beam_data(directory / "cluster.data", sites, bonds, ((-4, 4),) * 3)
-        script = beam3d.header(data) + "comm_modify vel yes\nbond_style beam\n" \
+        script = beam3d.header(data, newton=newton) + "comm_modify vel yes\nbond_style beam\n" \
             f"bond_coeff 1 {beam3d.TIMOSHENKO} damp 0.01\n" + beam3d.DEFORM
     script += f"""
 fix             1 all nve/mca
@@ -115,7 +115,7 @@ dump            d all custom {steps} traj.dump id x y z vx vy vz omegax omegay o
                 tqx tqy tqz
 dump_modify     d format float %.17g
 """ + (tail or f"run {steps}\n")
-    build.run(script, directory, extra_args=extra_args)
+    build.run(script, directory, extra_args=extra_args, nprocs=nprocs)
     return mcatest.read_thermo(directory / "log.lammps"), read_dump(directory / "traj.dump")
 
 
@@ -136,17 +136,12 @@ def test_energy_balance_with_the_tally(build, tmp_path, dim):
 
 def test_damping_conserves_momenta_and_spares_rigid_motion(build, tmp_path):
     thermo, snaps = balance_run(build, tmp_path / "nve", 3, 0.004, 400)
-    end = snaps[-1]
     cols = beam3d.columns
-    x, v = cols(end, ["x", "y", "z"]), cols(end, ["vx", "vy", "vz"])
-    w = cols(end, ["omegax", "omegay", "omegaz"])
-    p = v.sum(axis=0)
-    ang = np.cross(x, v).sum(axis=0) + 0.1 * w.sum(axis=0)
-    vscale = np.abs(v).max()
+    p, ang, vscale, n = beam3d.momenta(snaps[-1])
     print(f"momentum {np.abs(p).max():.1e}, angular momentum {np.abs(ang).max():.1e} "
           f"(velocity scale {vscale:.1e})")
-    assert np.abs(p).max() < 1e-12 * vscale * len(x)
-    assert np.abs(ang).max() < 1e-12 * vscale * len(x) * 4.0
+    assert np.abs(p).max() < 1e-12 * vscale * n
+    assert np.abs(ang).max() < 1e-12 * vscale * n * 4.0
 
     # an undeformed cluster in rigid motion (velocity V + W x r, spin W):
     # no force; sheared (velocity along x growing with y): damping forces
@@ -192,6 +187,23 @@ def test_kokkos_damping_matches_the_cpu_style(tmp_path, dim):
     print(f"{dim}-D kk 1 thread, {steps} steps: largest relative difference {diff:.1e}, "
           f"tally {tally:.1e}")
     assert diff < 1e-10 and tally < 1e-12
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_damping_is_the_same_on_ranks_and_newton(build, tmp_path, dim):
+    """2 MPI ranks, and newton_bond off, follow one rank with newton_bond
+    on: trajectory to 1e-10, tally to 1e-12 (sums in another order)."""
+    steps = 200
+    ref_thermo, ref = balance_run(build, tmp_path / "one", dim, 0.004, steps)
+    names = ["x", "y", "vx", "vy", "omegaz"] + (["z", "vz", "omegax", "omegay"] if dim == 3 else [])
+    for label, kwargs in (("2 ranks", {"nprocs": 2}), ("newton_bond off", {"newton": "off"})):
+        thermo, snaps = balance_run(build, tmp_path / label.replace(" ", "_"), dim, 0.004, steps,
+                                    **kwargs)
+        diff = max(np.abs(snaps[-1][c] - ref[-1][c]).max() / np.abs(ref[-1][c]).max()
+                   for c in names)
+        tally = abs(thermo["f_BEAM_STATE"][-1] / ref_thermo["f_BEAM_STATE"][-1] - 1)
+        print(f"{dim}-D, {label}: largest relative difference {diff:.1e}, tally {tally:.1e}")
+        assert diff < 1e-10 and tally < 1e-12
 
 
 def test_restart_keeps_the_tally(build, tmp_path):
