@@ -4,7 +4,8 @@ hexagonal lattice (in.beam: 2 nx ny particles, 3 bonds each, NVE at a small
 temperature), or with --dim 3 an fcc lattice (4 n^3 particles, 6 bonds
 each; --nx is n), against LAMMPS's bond_style bpm/rotational on the same
 lattice (the build with the BPM package: LAMMPS 2026, "current"), and the
-kk variant on 1 and 2 threads (the build with KOKKOS).  Reported: the
+kk variant on 1 and 2 threads (the build with KOKKOS), and beams with their
+sections from the particles' radii (bond_coeff ... radii).  Reported: the
 Bond section and the whole step per bond-step, best of --repeat runs.
 
     eval "$(tools/mca env current)"; eval "$(tools/mca env kokkos)"
@@ -23,9 +24,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # (label, build variable, style, switches)
 CASES = (("current cpu", "MCA_BUILD_CURRENT", "beam", ()),
          ("current cpu", "MCA_BUILD_CURRENT", "bpm", ()),
+         ("current cpu", "MCA_BUILD_CURRENT", "beam", ("-var", "sections", "radii")),
          ("kokkos cpu", "MCA_BUILD_KOKKOS", "beam", ()),
          ("kokkos kk 1 thread", "MCA_BUILD_KOKKOS", "beam", ("-k", "on", "t", "1", "-sf", "kk")),
-         ("kokkos kk 2 threads", "MCA_BUILD_KOKKOS", "beam", ("-k", "on", "t", "2", "-sf", "kk")))
+         ("kokkos kk 2 threads", "MCA_BUILD_KOKKOS", "beam", ("-k", "on", "t", "2", "-sf", "kk")),
+         ("kokkos kk 1 thread", "MCA_BUILD_KOKKOS", "beam",
+          ("-k", "on", "t", "1", "-sf", "kk", "-var", "sections", "radii")))
 
 
 def bonds_per_atom(args):
@@ -35,7 +39,8 @@ def bonds_per_atom(args):
 def run_once(case, args, outdir):
     label, build, style, switches = case
     lmp = os.path.join(os.environ[build], "lmp")
-    log = os.path.join(outdir, f"log.{style}.{label.replace(' ', '_')}")
+    kind = style + ("_radii" if "radii" in switches else "")
+    log = os.path.join(outdir, f"log.{kind}.{label.replace(' ', '_')}")
     ny, nz = (args.ny, 1) if args.dim == 2 else (args.nx, args.nx)
     cmd = [lmp, "-in", os.path.join(HERE, "in.beam"), "-var", "style", style, "-var", "dim",
            str(args.dim), "-var", "nx", str(args.nx), "-var", "ny", str(ny), "-var", "nz",
@@ -74,6 +79,8 @@ def main():
     for case in CASES:
         best = min(runs[case], key=lambda r: r["bond"])
         name = "beam" if case[2] == "beam" else "bpm/rotational"
+        if "radii" in case[3]:
+            name += " (radii)"
         lines.append(f"| {case[0]} | {name} | {best['bond']:.4f} | {best['step']:.4f} | "
                      f"{best['bond'] / base:.2f} |")
     report(lines, args.out)

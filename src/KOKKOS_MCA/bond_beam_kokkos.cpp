@@ -45,6 +45,7 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
   view<decltype(AtomKokkos::k_x)> x;
   view<decltype(AtomKokkos::k_v)> v;    // (read with damping only)
   view<decltype(AtomKokkos::k_omega)> omega;
+  view<decltype(AtomKokkos::k_radius)> radius;    // (read with radii only)
   atomic_view<view<decltype(AtomKokkos::k_f)>> f;
   atomic_view<view<decltype(AtomKokkos::k_torque)>> torque;
   MCAKokkos::double_2d<DeviceType> quat, records;
@@ -72,7 +73,9 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
     const double qi[4] = {quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3)};
     const double qj[4] = {quat(j, 0), quat(j, 1), quat(j, 2), quat(j, 3)};
     const double d[3] = {x(j, 0) - x(i, 0), x(j, 1) - x(i, 1), DIM == 3 ? x(j, 2) - x(i, 2) : 0.0};
-    const BeamCoeff &c = coeff(type);
+    BeamCoeff sized;
+    const BeamCoeff &c =
+        coeff(type).radii ? bond_coeff(coeff(type), DIM, radius(i), radius(j), sized) : coeff(type);
     BeamBond out;
     if (damp_now && c.beta > 0.0) {
       BeamRates rates;
@@ -193,7 +196,7 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
   // the records of the listed bonds, made on the host (the fix keeps the
   // reference states there) after each build of the list
   if (references_stale(nlist)) {
-    atomKK->sync(Host, X_MASK | TAG_MASK | BOND_MASK | MCA_QUAT_MASK);
+    atomKK->sync(Host, X_MASK | TAG_MASK | BOND_MASK | MCA_QUAT_MASK | (radii ? RADIUS_MASK : 0));
     neighborKK->k_bondlist.sync_host();
     auto list = neighborKK->k_bondlist.view_host();
     if ((int) k_records.extent(0) < nlist)
@@ -205,7 +208,8 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
   }
 
   atomKK->sync(execution_space,
-               datamask_read | MCA_QUAT_MASK | (damping ? V_MASK | OMEGA_MASK : 0));
+               datamask_read | MCA_QUAT_MASK | (damping ? V_MASK | OMEGA_MASK : 0) |
+                   (radii ? RADIUS_MASK : 0));
   atomKK->modified(execution_space, datamask_modify);
 
   if (domain->dimension == 3)
@@ -254,6 +258,7 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
     kernel.v = atomKK->k_v.template view<DeviceType>();
     kernel.omega = atomKK->k_omega.template view<DeviceType>();
   }
+  if (radii) kernel.radius = atomKK->k_radius.template view<DeviceType>();
   kernel.f = atomKK->k_f.template view<DeviceType>();
   kernel.torque = atomKK->k_torque.template view<DeviceType>();
   kernel.quat = avecKK->k_quat.template view<DeviceType>();

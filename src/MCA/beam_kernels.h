@@ -107,6 +107,9 @@ namespace BeamKernels {
     int scatter;                       // BeamScatter of the strengths from bond to bond
     int seed;
     double scatter_width;    // uniform: half width; Weibull: modulus m
+    int radii;               // 1: the section from the particles' radii (radii_section)
+    int fibre_rim;           // 1: the outer fibre at the rim of that section
+    double lambda;           // its radius over the smaller particle radius
   };
 
   // the reference state of a bond, in the order lower atom ID first.
@@ -185,6 +188,45 @@ namespace BeamKernels {
     c.shear = (c.ks > 0.0) ? 12.0 * c.EI / (c.ks * c.G * c.A) : 0.0;
     c.shear_y = (c.ks > 0.0) ? 12.0 * c.EIy / (c.ks * c.G * c.A) : 0.0;
     c.shear_z = (c.ks > 0.0) ? 12.0 * c.EIz / (c.ks * c.G * c.A) : 0.0;
+  }
+
+  /* --------------------------------------------------------------------
+     keyword radii lambda: each bond's section from its particles' radii,
+     R = lambda min(r_i, r_j) (the contact's radius; min: a small particle
+     holds a thin beam whatever its neighbour):
+       3-D  a round section of radius R:  A = pi R^2, I_y = I_z = pi R^4 / 4,
+            J = pi R^4 / 2;
+       2-D  a beam of height h = 2R per unit thickness:  A = h, I = h^3 / 12
+            (lambda = h / L for touching particles of one radius);
+     the outer fibre at R with bending rim.  sized: the type's record with
+     the section of this bond (E, G, ks, strengths as the type's)
+  -------------------------------------------------------------------- */
+
+  MCA_INLINE void radii_section(BeamCoeff &c, const int dimension, const double ri, const double rj)
+  {
+    const double R = c.lambda * (ri < rj ? ri : rj);
+    if (dimension == 3) {
+      c.A = M_PI * R * R;
+      c.I = c.Iy = c.Iz = 0.25 * M_PI * R * R * R * R;
+      c.J = 2.0 * c.I;
+    } else {
+      c.A = 2.0 * R;
+      c.I = c.Iy = c.Iz = 8.0 * R * R * R / 12.0;
+      c.J = 2.0 * c.I;
+    }
+    if (c.fibre_rim) c.fibre = R;
+    set_coeff(c);
+  }
+
+  // the record a bond uses: its type's, or with radii a copy in sized
+  // with the bond's own section (only bonds of such types pay for it)
+  MCA_INLINE const BeamCoeff &bond_coeff(const BeamCoeff &type_coeff, const int dimension,
+                                         const double ri, const double rj, BeamCoeff &sized)
+  {
+    if (!type_coeff.radii) return type_coeff;
+    sized = type_coeff;
+    radii_section(sized, dimension, ri, rj);
+    return sized;
   }
 
   // the reference state of a bond from the present geometry (stress-free)

@@ -44,7 +44,7 @@ static const char FIX_ID[] = "BEAM_STATE";
 
 BondBeam::BondBeam(LAMMPS *_lmp) :
     Bond(_lmp), coeffs(nullptr), fix_state(nullptr), L0_max(0.0), nrec(REC_REF + NREF_2D),
-    built_at(-1), built_n(0), breaking(0), damping(0), records(nullptr), maxrecords(0)
+    built_at(-1), built_n(0), breaking(0), damping(0), radii(0), records(nullptr), maxrecords(0)
 {
 }
 
@@ -94,9 +94,10 @@ void BondBeam::find_state()
 }
 
 /* ----------------------------------------------------------------------
-   bond_coeff N E A I [shear G ks] [poisson nu] [section Iy Iz J] [damp beta]
-                      [break sigma0 tau0] [bending c]
-                      [mohr phi] [scatter uniform w seed | weibull m seed]
+   bond_coeff N E A I     [shear G ks] [poisson nu] [section Iy Iz J] [damp beta]
+                          [break sigma0 tau0] [bending c]
+                          [mohr phi] [scatter uniform w seed | weibull m seed]
+   bond_coeff N E radii lambda [the same keywords but section; bending c | rim]
    bond_coeff N shearbeam kn kr [twist kt] [damp beta] [break N0 V0] [mohr phi] [scatter ...]
    (3-D: a beam needs G, from shear or poisson; a shear beam needs twist)
 ------------------------------------------------------------------------- */
@@ -104,7 +105,8 @@ void BondBeam::find_state()
 void BondBeam::coeff(int narg, char **arg)
 {
   if (narg < 4)
-    utils::missing_cmd_args(FLERR, "bond_coeff beam (N E A I or N shearbeam kn kr)", error);
+    utils::missing_cmd_args(
+        FLERR, "bond_coeff beam (N E A I, N E radii lambda or N shearbeam kn kr)", error);
   if (!allocated) allocate();
 
   int ilo, ihi;
@@ -123,6 +125,12 @@ void BondBeam::coeff(int narg, char **arg)
     c.kn = positive("shearbeam kn", arg[2]);
     c.kr = positive("shearbeam kr", arg[3]);
     c.A = c.I = c.Iy = c.Iz = c.J = 1.0;
+  } else if (strcmp(arg[2], "radii") == 0) {
+    // the section of each bond from its particles' radii (radii_section)
+    c.model = MODEL_BEAM;
+    c.E = positive("E", arg[1]);
+    c.radii = 1;
+    c.lambda = positive("radii lambda", arg[3]);
   } else {
     c.model = MODEL_BEAM;
     c.E = positive("E", arg[1]);
@@ -177,6 +185,10 @@ void BondBeam::coeff(int narg, char **arg)
       need(3, "section (Iy Iz J)");
       only_3d("section");
       only_beam("section");
+      if (c.radii)
+        error->all(FLERR,
+                   "Bond_coeff beam: section and radii exclude each other (radii makes a round "
+                   "section of each bond)");
       c.Iy = positive("section Iy", arg[iarg + 1]);
       c.Iz = positive("section Iz", arg[iarg + 2]);
       c.J = positive("section J", arg[iarg + 3]);
@@ -207,7 +219,14 @@ void BondBeam::coeff(int narg, char **arg)
         error->all(FLERR,
                    "Bond_coeff beam: bending (a fibre stress) needs a beam section (N E A "
                    "I), not shearbeam");
-      c.fibre = positive("bending (fibre distance)", arg[iarg + 1]);
+      if (strcmp(arg[iarg + 1], "rim") == 0) {
+        if (!c.radii)
+          error->all(FLERR,
+                     "Bond_coeff beam: bending rim needs a section from the radii (N E radii "
+                     "lambda); give the fibre distance c of a section N E A I");
+        c.fibre_rim = 1;
+      } else
+        c.fibre = positive("bending (fibre distance)", arg[iarg + 1]);
       bending = true;
       iarg += 2;
     } else if (word == "mohr") {
@@ -254,7 +273,11 @@ void BondBeam::coeff(int narg, char **arg)
                "or shear G ks)");
   if (three_d && c.model == MODEL_SPRINGS && !twist)
     error->all(FLERR, "Bond_coeff beam: a 3-D shearbeam needs its torsion spring (twist kt)");
-  set_coeff(c);
+  // (radii: the type's own record holds the section of R = lambda, unused)
+  if (c.radii)
+    radii_section(c, domain->dimension, 1.0, 1.0);
+  else
+    set_coeff(c);
 
   for (int i = ilo; i <= ihi; i++) {
     coeffs[i] = c;
@@ -279,10 +302,11 @@ void BondBeam::init_style()
 
   estimate_longest_bond();
 
-  breaking = damping = 0;
+  breaking = damping = radii = 0;
   for (int i = 1; i <= atom->nbondtypes; i++) {
     if (coeffs[i].breakable) breaking = 1;
     if (coeffs[i].beta > 0.0) damping = 1;
+    if (coeffs[i].radii) radii = 1;
   }
   if (damping && !comm->ghost_velocity)
     error->all(FLERR,
@@ -342,7 +366,8 @@ void BondBeam::fill_records(int nlist, const int *list, long row_stride, long co
   const int newton = force->newton_bond;
   const tagint *tag = atom->tag;
   const int nvalues = nref(domain->dimension);
-  int missing = 0, zero = 0;
+  const double *radius = atom->radius;
+  int missing = 0, zero = 0, no_radius = 0;
   double lmax = 0.0;
   for (int n = 0; n < nlist; n++) {
     const int i1 = list[n * row_stride], i2 = list[n * row_stride + column_stride];
@@ -360,13 +385,19 @@ void BondBeam::fill_records(int nlist, const int *list, long row_stride, long co
         ? strength_factor(coeffs[type], swap ? tag[i2] : tag[i1], swap ? tag[i1] : tag[i2])
         : 1.0;
     if (ref[REF_L0] <= 0.0) zero = 1;
+    if (type > 0 && coeffs[type].radii && !(radius[i1] > 0.0 && radius[i2] > 0.0)) no_radius = type;
     if (ref[REF_L0] > lmax) lmax = ref[REF_L0];
   }
-  int flags[2] = {missing, zero}, flagsall[2];
-  MPI_Allreduce(flags, flagsall, 2, MPI_INT, MPI_MAX, world);
+  int flags[3] = {missing, zero, no_radius}, flagsall[3];
+  MPI_Allreduce(flags, flagsall, 3, MPI_INT, MPI_MAX, world);
   if (flagsall[0]) error->all(FLERR, "Bond style beam: a listed bond is not stored by its atom");
   if (flagsall[1])
     error->all(FLERR, "Bond style beam: a bond of zero length (two particles at one place)");
+  if (flagsall[2])
+    error->all(FLERR,
+               "Bond style beam: a bond of type {} (section from the radii) joins a particle of "
+               "radius 0: set the radii > 0 (data file, set diameter)",
+               flagsall[2]);
   double all;
   MPI_Allreduce(&lmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
   L0_max = MAX(L0_max, all);
@@ -411,6 +442,7 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   double **quat = fix_state->avec->quat;
   double **v = atom->v;
   double **omega = atom->omega;
+  const double *radius = atom->radius;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   // damping in dynamics only (a minimizer's forces are the energy's gradient)
@@ -426,7 +458,8 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
     const int i = swap ? bondlist[n][1] : bondlist[n][0];
     const int j = swap ? bondlist[n][0] : bondlist[n][1];
     const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], DIM == 3 ? x[j][2] - x[i][2] : 0.0};
-    const BeamCoeff &c = coeffs[type];
+    BeamCoeff sized;
+    const BeamCoeff &c = bond_coeff(coeffs[type], DIM, radius[i], radius[j], sized);
     BeamBond out;
     if (damp_now && c.beta > 0.0) {
       BeamRates rates;
@@ -557,7 +590,7 @@ double BondBeam::equilibrium_distance(int /*type*/)
 ------------------------------------------------------------------------- */
 
 static constexpr int RESTART_TAG = 0x6265616d;    // "beam"
-static constexpr int RESTART_VERSION = 2;         // 2: 3-D sections and damping
+static constexpr int RESTART_VERSION = 3;         // 2: 3-D sections, damping; 3: radii
 
 void BondBeam::write_restart(FILE *fp)
 {
@@ -588,20 +621,27 @@ void BondBeam::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->nbondtypes; i++) {
     const BeamCoeff &c = coeffs[i];
-    std::string line = (c.model == MODEL_SPRINGS)
-        ? fmt::format("{} shearbeam {:.17g} {:.17g}", i, c.kn, c.kr)
-        : fmt::format("{} {:.17g} {:.17g} {:.17g}", i, c.E, c.A, c.I);
+    std::string line;
+    if (c.model == MODEL_SPRINGS)
+      line = fmt::format("{} shearbeam {:.17g} {:.17g}", i, c.kn, c.kr);
+    else if (c.radii)
+      line = fmt::format("{} {:.17g} radii {:.17g}", i, c.E, c.lambda);
+    else
+      line = fmt::format("{} {:.17g} {:.17g} {:.17g}", i, c.E, c.A, c.I);
     if (c.ks > 0.0) line += fmt::format(" shear {:.17g} {:.17g}", c.G, c.ks);
     if (c.G_from_nu) line += fmt::format(" poisson {:.17g}", c.nu);
     if (domain->dimension == 3) {
       if (c.model == MODEL_SPRINGS)
         line += fmt::format(" twist {:.17g}", c.kt);
-      else
+      else if (!c.radii)
         line += fmt::format(" section {:.17g} {:.17g} {:.17g}", c.Iy, c.Iz, c.J);
     }
     if (c.beta > 0.0) line += fmt::format(" damp {:.17g}", c.beta);
     if (c.breakable) line += fmt::format(" break {:.17g} {:.17g}", c.sigma0, c.tau0);
-    if (c.fibre > 0.0) line += fmt::format(" bending {:.17g}", c.fibre);
+    if (c.fibre_rim)
+      line += " bending rim";
+    else if (c.fibre > 0.0)
+      line += fmt::format(" bending {:.17g}", c.fibre);
     if (c.mohr) line += fmt::format(" mohr {:.17g}", c.phi_deg);
     if (c.scatter)
       line += fmt::format(" scatter {} {:.17g} {}",
@@ -629,15 +669,16 @@ double BondBeam::single(int type, double /*rsq*/, int i, int j, double &fforce)
   double **quat = fix_state->avec->quat;
   double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
   MCACompat::minimum_image(domain, d);
+  BeamCoeff sized;
+  const BeamCoeff &c =
+      bond_coeff(coeffs[type], domain->dimension, atom->radius[lo], atom->radius[hi], sized);
   if (domain->dimension == 3) {
-    const BeamForce3D out =
-        beam_force_3d(coeffs[type], ref, frame_state(ref, d, quat[lo], quat[hi]));
+    const BeamForce3D out = beam_force_3d(c, ref, frame_state(ref, d, quat[lo], quat[hi]));
     fforce = -out.N / sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     return out.energy;
   }
-  const BeamForce out =
-      beam_force_2d(coeffs[type], ref, d[0], d[1], planar_angle(quat[lo][0], quat[lo][3]),
-                    planar_angle(quat[hi][0], quat[hi][3]));
+  const BeamForce out = beam_force_2d(c, ref, d[0], d[1], planar_angle(quat[lo][0], quat[lo][3]),
+                                      planar_angle(quat[hi][0], quat[hi][3]));
   fforce = -out.N / sqrt(d[0] * d[0] + d[1] * d[1]);
   return out.energy;
 }

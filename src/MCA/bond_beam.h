@@ -74,6 +74,8 @@ class BondBeam : public Bond {
   int breaking;
   // damping: any type with damp (reads v and omega; the power goes to BEAM_STATE's tally)
   int damping;
+  // radii: any type with its sections from the particles' radii (reads radius)
+  int radii;
   void remove_broken(int nbroken, const int *pairs);
 
   void allocate();

@@ -42,7 +42,8 @@ DUMP = "id x y fx fy tqz"
 
 def beam_data(path, positions, bonds, box, radius=0.5, mass=1.0, inertia=0.1):
     """A 2-D atom_style mca data file (z = 0) with beams between the pairs
-    of `bonds` (0-based indices)."""
+    of `bonds` (0-based indices); `radius` is the data file's column, the
+    diameter."""
     lines = ["beam test data", "", f"{len(positions)} atoms", "1 atom types",
              f"{len(bonds)} bonds", "1 bond types", "",
              f"{box[0][0]} {box[0][1]} xlo xhi", f"{box[1][0]} {box[1][1]} ylo yhi",
@@ -315,7 +316,7 @@ def test_energy_and_momenta_are_conserved(build, tmp_path):
 # hexagonal lattice moduli (case 7)
 
 
-def lattice_moduli(build, directory, coeff_words, strain=1.0e-6, length=1.0):
+def lattice_moduli(build, directory, coeff_words, strain=1.0e-6, length=1.0, diameter=0.5):
     """E_2D and nu_2D of a periodic hexagonal lattice of bonds from its stress
     under a uniaxial strain (the nodes of a Bravais lattice do not turn)."""
     nx, ny = 6, 4
@@ -333,7 +334,8 @@ def lattice_moduli(build, directory, coeff_words, strain=1.0e-6, length=1.0):
             d -= np.array([lx, ly]) * np.round(d / np.array([lx, ly]))
             if np.hypot(*d) < 1.01 * length:
                 bonds.add((a, b))
-    data = beam_data(directory / "lattice.data", sites, sorted(bonds), ((0, lx), (0, ly)))
+    data = beam_data(directory / "lattice.data", sites, sorted(bonds), ((0, lx), (0, ly)),
+                     radius=diameter)
     script = header(data, "p p p") + f"""
 bond_style      beam
 bond_coeff      1 {coeff_words}

@@ -22,7 +22,6 @@ as the scalar of the internal fix BEAM_STATE (doc/src/bond_beam.rst).
 """
 
 import math
-import re
 
 import numpy as np
 import pytest
@@ -273,10 +272,4 @@ BAD = [
 
 @pytest.mark.parametrize("case", BAD, ids=[c[0] for c in BAD])
 def test_bad_damping_gives_clear_errors(build, tmp_path, case):
-    _, lines, message = case
-    data = beam2d.beam_data(tmp_path / "pair.data", [(0.0, 0.0), (1.0, 0.0)], [(0, 1)],
-                            ((-2, 3), (-2, 2)))
-    result = build.run(beam2d.header(data) + "bond_style beam\n" + lines + "\nrun 0\n", tmp_path,
-                       check=False)
-    out = result.stdout + result.stderr
-    assert result.returncode != 0 and "ERROR" in out and re.search(message, out), out[-800:]
+    beam3d.expect_error(build, tmp_path, 2, case[1], case[2])
