@@ -238,8 +238,11 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
       }
       atomKK->sync(Host, TAG_MASK | BOND_MASK);
     }
-    remove_broken(nbroken, pairs.data());
+    // (another rank's broken bonds can change the special lists here)
+    if (update_special) atomKK->sync(Host, TAG_MASK | SPECIAL_MASK);
+    const bool specials_changed = remove_broken(nbroken, pairs.data());
     if (nbroken) atomKK->modified(Host, BOND_MASK);
+    if (specials_changed) atomKK->modified(Host, SPECIAL_MASK);
   }
 }
 

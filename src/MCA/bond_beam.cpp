@@ -30,9 +30,11 @@
 #include "pair.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -44,7 +46,8 @@ static const char FIX_ID[] = "BEAM_STATE";
 
 BondBeam::BondBeam(LAMMPS *_lmp) :
     Bond(_lmp), coeffs(nullptr), fix_state(nullptr), L0_max(0.0), nrec(REC_REF + NREF_2D),
-    built_at(-1), built_n(0), breaking(0), damping(0), radii(0), records(nullptr), maxrecords(0)
+    built_at(-1), built_n(0), breaking(0), damping(0), radii(0), update_special(0),
+    records(nullptr), maxrecords(0)
 {
 }
 
@@ -225,8 +228,10 @@ void BondBeam::coeff(int narg, char **arg)
                      "Bond_coeff beam: bending rim needs a section from the radii (N E radii "
                      "lambda); give the fibre distance c of a section N E A I");
         c.fibre_rim = 1;
-      } else
+      } else {
+        c.fibre_rim = 0;
         c.fibre = positive("bending (fibre distance)", arg[iarg + 1]);
+      }
       bending = true;
       iarg += 2;
     } else if (word == "mohr") {
@@ -316,14 +321,25 @@ void BondBeam::init_style()
     error->all(FLERR,
                "Bond style beam with damp does not support run_style respa (its energy tally "
                "counts one bond evaluation per step)");
-  // a broken bond leaves the bond arrays but not the special lists: the
-  // pair style must treat bonded pairs as any other (BPM's overlay/pair yes)
-  if (breaking && force->pair && (force->special_lj[1] != 1.0 || force->special_coul[1] != 1.0))
+  // a broken bond leaves the bond arrays; with a pair style, either the
+  // pair style acts between bonded particles as between any others
+  // (special weights 1: BPM's overlay/pair yes) and nothing else changes,
+  // or bonded pairs are left out of it (1-2 lj weight 0, 1-3 and 1-4
+  // weights 1, so that the special lists hold the 1-2 partners only) and a
+  // broken bond also leaves the special lists (BPM's fix
+  // update/special/bonds, here on any newton_bond setting)
+  const double *lj = force->special_lj, *coul = force->special_coul;
+  const bool overlay = lj[1] == 1.0 && coul[1] == 1.0;
+  const bool excluded = lj[1] == 0.0 && (coul[1] == 0.0 || coul[1] == 1.0) && lj[2] == 1.0 &&
+      lj[3] == 1.0 && coul[2] == 1.0 && coul[3] == 1.0;
+  if (breaking && force->pair && !overlay && !excluded)
     error->all(FLERR,
-               "Bond style beam with break requires special_bonds lj/coul 1.0 for 1-2 pairs "
-               "when a pair style is defined (bonded particles interact through the pair style "
-               "too, and go on doing so when the bond breaks); found lj {} coul {}",
-               force->special_lj[1], force->special_coul[1]);
+               "Bond style beam with break and a pair style requires special_bonds lj/coul 1 1 1 "
+               "(the pair style acts between bonded particles too) or lj 0 1 1 with coul 0 1 1 "
+               "or 1 1 1 (bonded particles interact through the bond only, broken ones through "
+               "the pair style); found lj {} {} {} coul {} {} {}",
+               lj[1], lj[2], lj[3], coul[1], coul[2], coul[3]);
+  update_special = breaking && force->pair && excluded;
 }
 
 /* ----------------------------------------------------------------------
@@ -459,7 +475,9 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
     const int j = swap ? bondlist[n][0] : bondlist[n][1];
     const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], DIM == 3 ? x[j][2] - x[i][2] : 0.0};
     BeamCoeff sized;
-    const BeamCoeff &c = bond_coeff(coeffs[type], DIM, radius[i], radius[j], sized);
+    const BeamCoeff &c = coeffs[type].radii
+        ? bond_coeff(coeffs[type], DIM, radius[i], radius[j], sized)
+        : coeffs[type];
     BeamBond out;
     if (damp_now && c.beta > 0.0) {
       BeamRates rates;
@@ -511,7 +529,7 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
    owns its lower-ID atom
 ------------------------------------------------------------------------- */
 
-void BondBeam::remove_broken(int nbroken, const int *pairs)
+bool BondBeam::remove_broken(int nbroken, const int *pairs)
 {
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
@@ -519,12 +537,16 @@ void BondBeam::remove_broken(int nbroken, const int *pairs)
   int **bond_type = atom->bond_type;
   tagint **bond_atom = atom->bond_atom;
   bigint counted = 0;
+  std::vector<int> reported;    // the bonds counted here (entries i1 i2)
   for (int b = 0; b < nbroken; b++) {
     const int ends[2] = {pairs[2 * b], pairs[2 * b + 1]};
     const int lo = tag[ends[0]] < tag[ends[1]] ? ends[0] : ends[1];
     // newton_bond on: each bond is listed once, on one rank; off: on the
     // ranks of both atoms, counted where the lower ID is owned
-    if (force->newton_bond || lo < nlocal) counted++;
+    if (force->newton_bond || lo < nlocal) {
+      counted++;
+      if (update_special) reported.insert(reported.end(), ends, ends + 2);
+    }
     for (int e = 0; e < 2; e++) {
       const int i = ends[e], j = ends[1 - e];
       if (i >= nlocal) continue;
@@ -542,6 +564,73 @@ void BondBeam::remove_broken(int nbroken, const int *pairs)
   bigint total;
   MPI_Allreduce(&counted, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   atom->nbonds -= total;
+  return (update_special && total > 0)
+      ? forget_broken_pairs(static_cast<int>(reported.size() / 2), reported.data())
+      : false;
+}
+
+/* ----------------------------------------------------------------------
+   bonds broken on any rank leave the special lists of the local atoms
+   (with newton_bond on a bond is evaluated on one rank only, while both
+   atoms' owners hold the pair in their special lists: every rank learns
+   the broken pairs, each reported by the rank that counts it); the
+   neighbor lists are built again at the next step
+   (the forces of this step are done), so a pair style that left the
+   bonded pair out sees it from then on.  A step that breaks no bond pays
+   nothing for this
+------------------------------------------------------------------------- */
+
+bool BondBeam::forget_broken_pairs(int nbroken, const int *pairs)
+{
+  const tagint *tag = atom->tag;
+  std::vector<tagint> mine(2 * nbroken);
+  for (int b = 0; b < nbroken; b++) {
+    const tagint t1 = tag[pairs[2 * b]], t2 = tag[pairs[2 * b + 1]];
+    mine[2 * b] = MIN(t1, t2);
+    mine[2 * b + 1] = MAX(t1, t2);
+  }
+  const int nprocs = comm->nprocs;
+  const int count = 2 * nbroken;
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int all = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = all;
+    all += counts[p];
+  }
+  std::vector<tagint> every(all);
+  MPI_Allgatherv(mine.data(), count, MPI_LMP_TAGINT, every.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
+
+  // (each bond is reported once, by the rank that counts it; two bonds
+  // between one pair would be reported twice: once is enough)
+  const int nlocal = atom->nlocal;
+  int **nspecial = atom->nspecial;
+  tagint **special = atom->special;
+  bool changed = false;
+  std::vector<std::pair<tagint, tagint>> broken;
+  for (int k = 0; k < all; k += 2) broken.emplace_back(every[k], every[k + 1]);
+  std::sort(broken.begin(), broken.end());
+  broken.erase(std::unique(broken.begin(), broken.end()), broken.end());
+  for (const auto &pair : broken) {
+    for (int e = 0; e < 2; e++) {
+      const tagint self = e ? pair.second : pair.first, partner = e ? pair.first : pair.second;
+      const int i = atom->map(self);
+      if (i < 0 || i >= nlocal) continue;
+      // the 1-2 partners come first; with weights 1 for 1-3 and 1-4 they are all there is
+      const int n12 = nspecial[i][0], nall = nspecial[i][2];
+      int m = 0;
+      while (m < n12 && special[i][m] != partner) m++;
+      // (gone already: a second bond between the pair broke earlier, or
+      // the bond was made without its special entry, create_bonds special no)
+      if (m == n12) continue;
+      for (; m < nall - 1; m++) special[i][m] = special[i][m + 1];
+      for (int k = 0; k < 3; k++) nspecial[i][k]--;
+      changed = true;
+    }
+  }
+  fix_state->next_reneighbor = update->ntimestep + 1;
+  return changed;
 }
 
 /* ----------------------------------------------------------------------

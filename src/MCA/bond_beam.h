@@ -76,7 +76,15 @@ class BondBeam : public Bond {
   int damping;
   // radii: any type with its sections from the particles' radii (reads radius)
   int radii;
-  void remove_broken(int nbroken, const int *pairs);
+  // update_special: bonded pairs are left out of the pair style (special
+  // weights 0 for 1-2, 1 for 1-3 and 1-4): a broken bond leaves the special
+  // lists of its atoms on every rank and the neighbor lists are built again
+  // at the next step, so that the two particles interact through the pair
+  // style from then on (BPM's fix update/special/bonds)
+  int update_special;
+  // returns whether the special lists of local atoms changed
+  bool remove_broken(int nbroken, const int *pairs);
+  bool forget_broken_pairs(int nbroken, const int *pairs);
 
   void allocate();
   void estimate_longest_bond();

@@ -44,6 +44,10 @@ FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
 
   restart_peratom = 1;
   create_attribute = 1;
+  // bond_style beam asks for a neighbor list build after a bond broke
+  // (special lists changed): Neighbor checks next_reneighbor each step
+  force_reneighbor = 1;
+  next_reneighbor = -1;
   restart_global = 1;
   scalar_flag = 1;
   global_freq = 1;

@@ -705,7 +705,7 @@ def bonds_in_data(path):
     return header, len([line for line in section.splitlines() if line.strip()])
 
 
-def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail=""):
+def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail="", extra=""):
     nx, ny = 14, 4
     sites = []
     for j in range(2 * ny):
@@ -717,7 +717,7 @@ def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail=""):
     # not depend on which atom holds a bond)
     bonds = [(b, a) for a in range(len(sites)) for b in range(a + 1, len(sites)) if d[a, b] < 1.01]
     data = beam_data(directory / "strip.data", sites, bonds, ((-1, 16), (-1, 8)))
-    script = header(data, newton=newton) + f"""
+    script = header(data, newton=newton, extra=extra) + f"""
 bond_style      beam
 bond_coeff      1 {E_} {A_} {I_} break {SIGMA0} {TAU0} bending {FIBRE} scatter uniform 0.3 77
 variable        left atom x<0.4
@@ -838,24 +838,6 @@ def test_damped_integrator_kokkos_matches_the_cpu_fix(tmp_path):
     de = abs(t_kk["Ecouple"][-1] - t_cpu["Ecouple"][-1]) / t_cpu["Ecouple"][-1]
     print(f"nve/damped/kk 2 threads: trajectory {diff:.1e}, dissipated energy {de:.1e}")
     assert diff < 1e-10 and de < 1e-10
-
-
-def test_breaking_with_a_pair_style_needs_special_weights_one(build, tmp_path):
-    sites, bonds = hex_patch(1.1)
-    data = beam_data(tmp_path / "patch.data", sites, bonds, ((-3, 3), (-3, 3)))
-    script = header(data) + """
-pair_style      zero 1.0
-pair_coeff      * *
-bond_style      beam
-bond_coeff      1 1.0 0.1 0.001 break 1 1
-run             0
-"""
-    result = build.run(script, tmp_path / "a", check=False)
-    out = result.stdout + result.stderr
-    assert result.returncode != 0
-    assert re.search(r"with break requires special_bonds lj/coul 1.0 .*found lj 0 coul 0", out)
-    build.run(script.replace("pair_style ", "special_bonds   lj/coul 1.0 1.0 1.0\npair_style "),
-              tmp_path / "b")
 
 
 def test_data_file_keeps_every_coefficient(build, tmp_path):

@@ -23,6 +23,7 @@ import pathlib
 import sys
 
 import numpy as np
+import pytest
 
 from mcatest import builds, kokkos_args, kokkos_build
 
@@ -55,6 +56,9 @@ def test_hertz_contact_and_first_yield(build, tmp_path):
     pressure less and less coarsely).  First yield: at p0 / sigma_y within 10 % of von Mises'
     1.649 (nu = 0.33); the automata that yield first are near the surface
     under the lens, at the coarse resolution a = 5 d (doc: 1.52 here)."""
+    if build.name == "kokkos":
+        pytest.skip("one LAMMPS version suffices for this scene (as the other indentation "
+                    "tests: the same pair mca and contacts in both)")
     R = HERTZ["Rind"] * ia.D
     t = indent(build, tmp_path, **HERTZ)
     P, factor, a_yield = ia.yield_onset(t, R, "AR")

@@ -142,6 +142,9 @@ def test_cube_with_clamped_grips_thesis_setup(build, tmp_path):
     apparent shear modulus is below G (measured 0.69 G).  The bounds are the
     elasticity theory statements; the numbers are printed for the record.
     """
+    if build.name == "kokkos":
+        pytest.skip("one LAMMPS version suffices for this scene (the same pair mca in both; "
+                    "the frictionless cube runs on both)")
     g, k, _ = moduli(0.3)
     _, t, strain, stress, _ = run_cube(build, tmp_path / "tension", "clamped", "tension")
     e_app = quasi_static_slope(t, strain, stress)
