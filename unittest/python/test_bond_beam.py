@@ -521,16 +521,29 @@ BAD = [
 ]
 
 
-@pytest.mark.parametrize("case", BAD, ids=[c[0] for c in BAD])
-def test_bad_coefficients_give_clear_errors(build, tmp_path, case):
-    _, line, message = case
-    sites, bonds = hex_patch(1.1)
-    data = beam_data(tmp_path / "patch.data", sites, bonds, ((-3, 3), (-3, 3)))
-    result = build.run(header(data) + "bond_style beam\n" + line + "\nrun 0\n", tmp_path,
+def expect_error(build, directory, dim, lines, message):
+    """Two bonded particles (2-D or 3-D), bond_style beam, then `lines` and
+    a run: LAMMPS must stop with an ERROR matching `message` (the bad-input
+    tests of all beam test files)."""
+    if dim == 2:
+        data = beam_data(directory / "pair.data", [(0.0, 0.0), (1.0, 0.0)], [(0, 1)],
+                         ((-2, 3), (-2, 2)))
+        script = header(data)
+    else:
+        import test_bond_beam_3d as beam3d
+        data = beam3d.beam_data(directory / "pair.data", [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0)],
+                                [(0, 1)], ((-2, 3), (-2, 2), (-2, 2)))
+        script = beam3d.header(data)
+    result = build.run(script + "bond_style beam\n" + lines + "\nrun 0\n", directory,
                        check=False)
     out = result.stdout + result.stderr
     assert result.returncode != 0
     assert "ERROR" in out and re.search(message, out), out[-800:]
+
+
+@pytest.mark.parametrize("case", BAD, ids=[c[0] for c in BAD])
+def test_bad_coefficients_give_clear_errors(build, tmp_path, case):
+    expect_error(build, tmp_path, 2, case[1], case[2])
 
 
 def test_wrong_atom_style_gives_a_clear_error(build, tmp_path):

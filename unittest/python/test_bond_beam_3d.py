@@ -27,6 +27,7 @@ import numpy as np
 import pytest
 
 import mcatest
+import test_bond_beam as beam2d
 from mcatest import read_dump
 
 DUMP = "id x y z fx fy fz tqx tqy tqz"
@@ -529,41 +530,19 @@ BAD_2D = [
 ]
 
 
-def expect_error(build, directory, dim, lines, message):
-    """Two bonded particles (2-D or 3-D), bond_style beam, then `lines` and
-    a run: LAMMPS must stop with an ERROR matching `message`."""
-    if dim == 2:
-        import test_bond_beam as beam2d
-        data = beam2d.beam_data(directory / "pair.data", [(0.0, 0.0), (1.0, 0.0)], [(0, 1)],
-                                ((-2, 3), (-2, 2)))
-        script = beam2d.header(data)
-    else:
-        data = beam_data(directory / "pair.data", [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0)], [(0, 1)],
-                         ((-2, 3), (-2, 2), (-2, 2)))
-        script = header(data)
-    result = build.run(script + "bond_style beam\n" + lines + "\nrun 0\n", directory,
-                       check=False)
-    out = result.stdout + result.stderr
-    assert result.returncode != 0
-    assert "ERROR" in out and re.search(message, out), out[-800:]
-
-
 @pytest.mark.parametrize("case", BAD_2D, ids=[c[0] for c in BAD_2D])
 def test_3d_keywords_in_2d_give_clear_errors(build, tmp_path, case):
-    expect_error(build, tmp_path, 2, case[1], case[2])
+    beam2d.expect_error(build, tmp_path, 2, case[1], case[2])
 
 
 @pytest.mark.parametrize("case", BAD_3D, ids=[c[0] for c in BAD_3D])
 def test_bad_3d_coefficients_give_clear_errors(build, tmp_path, case):
-    expect_error(build, tmp_path, 3, case[1], case[2])
+    beam2d.expect_error(build, tmp_path, 3, case[1], case[2])
 
 
 def test_turn_and_angle_together_give_a_clear_error(build, tmp_path):
-    data = beam_data(tmp_path / "pair.data", [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0)], [(0, 1)],
-                     ((-2, 3), (-2, 2), (-2, 2)))
-    result = build.run(header(data) + "mca_set all angle 10 turnx 5\n", tmp_path, check=False)
-    out = result.stdout + result.stderr
-    assert result.returncode != 0 and re.search(r"use either angle \(set\) or turnx", out)
+    beam2d.expect_error(build, tmp_path, 3, "mca_set all angle 10 turnx 5",
+                        r"use either angle \(set\) or turnx")
 
 
 # ---------------------------------------------------------------------------

@@ -272,4 +272,4 @@ BAD = [
 
 @pytest.mark.parametrize("case", BAD, ids=[c[0] for c in BAD])
 def test_bad_damping_gives_clear_errors(build, tmp_path, case):
-    beam3d.expect_error(build, tmp_path, 2, case[1], case[2])
+    beam2d.expect_error(build, tmp_path, 2, case[1], case[2])

@@ -232,11 +232,11 @@ BAD = [
 
 @pytest.mark.parametrize("case", BAD, ids=[c[0] for c in BAD])
 def test_bad_radii_input_gives_clear_errors(build, tmp_path, case):
-    beam3d.expect_error(build, tmp_path, 3, case[1], case[2])
+    beam2d.expect_error(build, tmp_path, 3, case[1], case[2])
 
 
 def test_a_particle_without_radius_gives_a_clear_error(build, tmp_path):
-    beam3d.expect_error(build, tmp_path, 3,
+    beam2d.expect_error(build, tmp_path, 3,
                         "set atom 2 diameter 0.0\nbond_coeff 1 1.0 radii 0.5 poisson 0.3",
                         r"a bond of type 1 \(section from the radii\) joins a particle of "
                         r"radius 0")
