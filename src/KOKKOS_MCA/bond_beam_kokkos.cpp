@@ -28,6 +28,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -55,9 +57,29 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
   atomic_view<MCAKokkos::double_2d<DeviceType>> vatom;
   MCAKokkos::int_2d<DeviceType> broken;    // entries (i1, i2, n) broken this step
   Kokkos::View<int, DeviceType> nbroken;
+  // the particle criterion (read with it only): the tags, the particles'
+  // states of the last evaluation, their sums, each bond's measure
+  view<decltype(AtomKokkos::k_tag)> tag;
+  MCAKokkos::double_2d<DeviceType> pstate;
+  atomic_view<MCAKokkos::double_2d<DeviceType>> psum;
+  MCAKokkos::double_2d<DeviceType> psum_cells;    // (the same, for atomic max)
+  MCAKokkos::double_1d<DeviceType> bond_measure;
+  int particle, particle_now;
   int nlocal, newton_bond;
   int damp_now;    // damping in dynamics only
   int eflag_global, eflag_atom, vflag_global, vflag_atom;
+
+  // a bond broken: its record says so until the list is built again
+  KOKKOS_INLINE_FUNCTION void report_broken(const int n) const
+  {
+    records(n, BondBeam::REC_STRENGTH) = -1.0;
+    const int k = Kokkos::atomic_fetch_add(&nbroken(), 1);
+    if (k < (int) broken.extent(0)) {
+      broken(k, 0) = bondlist(n, 0);
+      broken(k, 1) = bondlist(n, 1);
+      broken(k, 2) = n;
+    }
+  }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int n, EV_FLOAT &ev) const
   {
@@ -76,6 +98,18 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
     BeamCoeff sized;
     const BeamCoeff &c =
         coeff(type).radii ? bond_coeff(coeff(type), DIM, radius(i), radius(j), sized) : coeff(type);
+    // (the particle criterion's decision of the last evaluation)
+    if (particle_now && c.particle) {
+      const ParticleState si = {pstate(i, PSTATE_SIGMA), pstate(i, PSTATE_TAU),
+                                pstate(i, PSTATE_PARTNER)};
+      const ParticleState sj = {pstate(j, PSTATE_SIGMA), pstate(j, PSTATE_TAU),
+                                pstate(j, PSTATE_PARTNER)};
+      if (particle_breaks(c, si, sj, (double) tag(i), (double) tag(j),
+                          records(n, BondBeam::REC_STRENGTH))) {
+        report_broken(n);
+        return;
+      }
+    }
     BeamBond out;
     if (damp_now && c.beta > 0.0) {
       BeamRates rates;
@@ -87,17 +121,25 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
       out = beam_bond<DIM>(c, ref, d, qi, qj, records(n, BondBeam::REC_STRENGTH), &rates);
     } else
       out = beam_bond<DIM>(c, ref, d, qi, qj, records(n, BondBeam::REC_STRENGTH));
-    if (out.measure >= 1.0) {
-      records(n, BondBeam::REC_STRENGTH) = -1.0;
-      const int k = Kokkos::atomic_fetch_add(&nbroken(), 1);
-      if (k < (int) broken.extent(0)) {
-        broken(k, 0) = bondlist(n, 0);
-        broken(k, 1) = bondlist(n, 1);
-        broken(k, 2) = n;
-      }
+    if (out.measure >= 1.0 && !c.particle) {
+      report_broken(n);
       return;
     }
     const bool own_i = newton_bond || i < nlocal, own_j = newton_bond || j < nlocal;
+    if (particle) {
+      // FixBeamState::add_share; the candidate found by find_candidates
+      double w[6];
+      virial_share(d, out.fe, w);
+      for (int k = 0; k < 6; k++) {
+        if (own_i) psum(i, PSUM_VIRIAL + k) += w[k];
+        if (own_j) psum(j, PSUM_VIRIAL + k) += w[k];
+      }
+      if (c.particle) {
+        bond_measure(n) = out.measure;
+        if (own_i) Kokkos::atomic_fetch_max(&psum_cells(i, PSUM_MEASURE), out.measure);
+        if (own_j) Kokkos::atomic_fetch_max(&psum_cells(j, PSUM_MEASURE), out.measure);
+      }
+    }
     if (own_i) {
       f(i, 0) -= out.f[0];
       f(i, 1) -= out.f[1];
@@ -137,6 +179,29 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
           if (own_j) vatom(j, k) += 0.5 * vir[k];
         }
     }
+  }
+};
+
+// the particle criterion's candidates: of the bonds with an end's largest
+// measure, the one to the lowest partner ID (FixBeamState::add_share's
+// order, whatever order the threads ran in)
+template <class DeviceType> struct BeamCandidateKernel {
+  template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
+  view<decltype(NeighborKokkos::k_bondlist)> bondlist;
+  view<decltype(AtomKokkos::k_tag)> tag;
+  MCAKokkos::double_1d<DeviceType> bond_measure;
+  MCAKokkos::double_2d<DeviceType> psum;
+  int nlocal, newton_bond;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int n) const
+  {
+    const double measure = bond_measure(n);
+    if (measure < 0.0) return;    // broken, or not of a particle-criterion type
+    const int i = bondlist(n, 0), j = bondlist(n, 1);
+    if ((newton_bond || i < nlocal) && measure == psum(i, PSUM_MEASURE))
+      Kokkos::atomic_fetch_min(&psum(i, PSUM_PARTNER), (double) tag(j));
+    if ((newton_bond || j < nlocal) && measure == psum(j, PSUM_MEASURE))
+      Kokkos::atomic_fetch_min(&psum(j, PSUM_PARTNER), (double) tag(i));
   }
 };
 
@@ -207,9 +272,11 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     k_records.template sync<DeviceType>();
   }
 
+  const int nall = atom->nlocal + atom->nghost;
+  if (particle) particle_states_to_device(nall);
   atomKK->sync(execution_space,
                datamask_read | MCA_QUAT_MASK | (damping ? V_MASK | OMEGA_MASK : 0) |
-                   (radii ? RADIUS_MASK : 0));
+                   (radii ? RADIUS_MASK : 0) | (particle ? TAG_MASK : 0));
   atomKK->modified(execution_space, datamask_modify);
 
   if (domain->dimension == 3)
@@ -217,6 +284,10 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
   else
     launch<2>(nlist, neighborKK);
   tally.to_host<DeviceType>(eflag_atom, vflag_atom);
+  if (particle) {
+    find_candidates(nlist, neighborKK);
+    particle_sums_to_host(nall);
+  }
 
   // broken bonds leave the bond arrays on the host (on the device their
   // records say so until the list is built again); in the order of the
@@ -244,6 +315,57 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     if (nbroken) atomKK->modified(Host, BOND_MASK);
     if (specials_changed) atomKK->modified(Host, SPECIAL_MASK);
   }
+  if (particle) {
+    atomKK->sync(Host, RADIUS_MASK);
+    fix_state->decide_particles(force->newton_bond);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the particle criterion: the states the fix kept (and sent to the
+   ghosts) to the device, the sums cleared; after the kernels, the sums to
+   the fix (host), which communicates them and decides
+------------------------------------------------------------------------- */
+
+namespace {
+using HostRows = Kokkos::View<double **, Kokkos::LayoutRight, Kokkos::HostSpace,
+                              Kokkos::MemoryTraits<Kokkos::Unmanaged>>;
+}
+
+template <class DeviceType> void BondBeamKokkos<DeviceType>::particle_states_to_device(int nall)
+{
+  if ((int) d_psum.extent(0) < nall) {
+    d_psum = MCAKokkos::double_2d<DeviceType>("bond:beam_psum", atom->nmax, (int) NPSUM);
+    d_pstate = MCAKokkos::double_2d<DeviceType>("bond:beam_pstate", atom->nmax, (int) NPSTATE);
+  }
+  if (nall == 0) return;
+  const auto rows = std::make_pair(0, nall);
+  Kokkos::deep_copy(Kokkos::subview(d_pstate, rows, Kokkos::ALL),
+                    HostRows(fix_state->pstate[0], nall, (int) NPSTATE));
+  Kokkos::deep_copy(Kokkos::subview(d_psum, rows, std::make_pair(0, 6)), 0.0);
+  // no candidate yet (a measure is >= 0)
+  Kokkos::deep_copy(Kokkos::subview(d_psum, rows, (int) PSUM_MEASURE), -1.0);
+  Kokkos::deep_copy(Kokkos::subview(d_psum, rows, (int) PSUM_PARTNER), HUGE_VAL);
+}
+
+template <class DeviceType>
+void BondBeamKokkos<DeviceType>::find_candidates(int nlist, NeighborKokkos *neighborKK)
+{
+  BeamCandidateKernel<DeviceType> kernel;
+  kernel.bondlist = neighborKK->k_bondlist.template view<DeviceType>();
+  kernel.tag = atomKK->k_tag.template view<DeviceType>();
+  kernel.bond_measure = d_bond_measure;
+  kernel.psum = d_psum;
+  kernel.nlocal = atom->nlocal;
+  kernel.newton_bond = force->newton_bond;
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlist), kernel);
+}
+
+template <class DeviceType> void BondBeamKokkos<DeviceType>::particle_sums_to_host(int nall)
+{
+  if (nall == 0) return;
+  Kokkos::deep_copy(HostRows(fix_state->sums[0], nall, (int) NPSUM),
+                    Kokkos::subview(d_psum, std::make_pair(0, nall), Kokkos::ALL));
 }
 
 /* ----------------------------------------------------------------------
@@ -262,6 +384,19 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
     kernel.omega = atomKK->k_omega.template view<DeviceType>();
   }
   if (radii) kernel.radius = atomKK->k_radius.template view<DeviceType>();
+  kernel.particle = particle;
+  kernel.particle_now = particle_now();
+  if (particle) {
+    if ((int) d_bond_measure.extent(0) < nlist)
+      d_bond_measure =
+          MCAKokkos::double_1d<DeviceType>("bond:beam_measure", nlist + nlist / 4 + 16);
+    Kokkos::deep_copy(d_bond_measure, -2.0);    // (no candidate unless set)
+    kernel.tag = atomKK->k_tag.template view<DeviceType>();
+    kernel.pstate = d_pstate;
+    kernel.psum = d_psum;
+    kernel.psum_cells = d_psum;
+    kernel.bond_measure = d_bond_measure;
+  }
   kernel.f = atomKK->k_f.template view<DeviceType>();
   kernel.torque = atomKK->k_torque.template view<DeviceType>();
   kernel.quat = avecKK->k_quat.template view<DeviceType>();

@@ -32,7 +32,10 @@ namespace LAMMPS_NS {
    list (an instance per dimension), calling the same element
    (beam_kernels.h).  Forces and torques are added atomically (a bond adds
    to two atoms); the reference states of the listed bonds go to the
-   device when the list is built again
+   device when the list is built again.  The particle criterion's sums
+   are added atomically too (the candidate in a second pass: the largest
+   measure, then the lowest partner ID among the bonds that have it) and
+   go to the host, where the fix communicates them and decides
 ------------------------------------------------------------------------- */
 
 template <class DeviceType>
@@ -51,7 +54,14 @@ class BondBeamKokkos : private MCAKokkos::RequiresKokkos, public BondBeam {
   Kokkos::View<BeamKernels::BeamCoeff *, DeviceType> d_coeff;
   MCAKokkos::int_2d<DeviceType> d_broken;
   Kokkos::View<int, DeviceType> d_nbroken;
+  // the particle criterion: the fix's states and sums (PSTATE_*, PSUM_*
+  // of local and ghost atoms) and each listed bond's measure on the device
+  MCAKokkos::double_2d<DeviceType> d_pstate, d_psum;
+  MCAKokkos::double_1d<DeviceType> d_bond_measure;
   template <int DIM> void launch(int nlist, class NeighborKokkos *neighborKK);
+  void particle_states_to_device(int nall);
+  void find_candidates(int nlist, class NeighborKokkos *neighborKK);
+  void particle_sums_to_host(int nall);
 };
 
 }    // namespace LAMMPS_NS

@@ -110,6 +110,7 @@ namespace BeamKernels {
     int radii;               // 1: the section from the particles' radii (radii_section)
     int fibre_rim;           // 1: the outer fibre at the rim of that section
     double lambda;           // its radius over the smaller particle radius
+    int particle;            // 1: broken by its particles' averaged stress (particle_measure)
   };
 
   // the reference state of a bond, in the order lower atom ID first.
@@ -552,6 +553,7 @@ namespace BeamKernels {
 
   struct BeamBond {
     double f[3], ti[3], tj[3];
+    double fe[3];    // the elastic part of f (the particle criterion's stress)
     double energy, measure, dissipation;
   };
 
@@ -572,6 +574,9 @@ namespace BeamKernels {
       b.tj[2] = out.tj;
       b.energy = out.energy;
       b.measure = c.breakable ? break_measure(c, out, strength) : 0.0;
+      b.fe[0] = b.f[0];
+      b.fe[1] = b.f[1];
+      b.fe[2] = 0.0;
       b.dissipation = rates
           ? planar_damping(c, ref[REF_L0], d[0], d[1], *rates, b.f[0], b.f[1], b.ti[2], b.tj[2])
           : 0.0;
@@ -585,9 +590,88 @@ namespace BeamKernels {
       }
       b.energy = out.energy;
       b.measure = c.breakable ? break_measure(c, out, strength) : 0.0;
+      for (int k = 0; k < 3; k++) b.fe[k] = b.f[k];
       b.dissipation = rates ? frame_damping(c, ref[REF_L0], st, *rates, b.f, b.ti, b.tj) : 0.0;
     }
     return b;
+  }
+
+  /* --------------------------------------------------------------------
+     the particle criterion (criterion particle; digest A.7): the stress of
+     a particle averaged over its bonds (all of them, of any type),
+       sigma = -(1/V) sym sum_b d_b (x) f_b / 2,
+     d_b = x_j - x_i and f_b the bond's elastic force on j (either end
+     gives the same term: the particle's share of the bond's virial, as
+     compute stress/atom sums it; without damping forces, as the bonds'
+     own measures), sym its symmetric part (the end moments make
+     d (x) f unsymmetric), V = 4 pi r^3 / 3 (2-D: pi r^2 per unit
+     thickness); tension positive.  Its mean normal stress tr(sigma) / d
+     and sqrt(J2) of its deviator enter the ellipse as sigma and tau.  A
+     particle that fails loses one bond: of its bonds of such types, the
+     one nearest its own limit (the largest elliptic measure of the bond's
+     own loads; a tie: the partner of lower ID)
+  -------------------------------------------------------------------- */
+
+  // what a particle collects during the bond loop: its virial sum (xx yy
+  // zz xy xz yz, symmetric), the measure and the partner's ID of its
+  // candidate bond; and what it keeps: its mean stress, sqrt(J2), the
+  // candidate's partner (0: none)
+  enum { PSUM_VIRIAL = 0, PSUM_MEASURE = 6, PSUM_PARTNER = 7, NPSUM = 8 };
+  enum { PSTATE_SIGMA = 0, PSTATE_TAU = 1, PSTATE_PARTNER = 2, NPSTATE = 3 };
+
+  MCA_INLINE double particle_volume(const int dimension, const double r)
+  {
+    return dimension == 3 ? 4.0 / 3.0 * M_PI * r * r * r : M_PI * r * r;
+  }
+
+  // the symmetric part of a bond's virial d (x) f, halved: each end's share
+  MCA_INLINE void virial_share(const double *d, const double *f, double *w)
+  {
+    w[0] = 0.5 * d[0] * f[0];
+    w[1] = 0.5 * d[1] * f[1];
+    w[2] = 0.5 * d[2] * f[2];
+    w[3] = 0.25 * (d[0] * f[1] + d[1] * f[0]);
+    w[4] = 0.25 * (d[0] * f[2] + d[2] * f[0]);
+    w[5] = 0.25 * (d[1] * f[2] + d[2] * f[1]);
+  }
+
+  // (measure, partner) is a better candidate than (best, best_partner)
+  MCA_INLINE bool better_candidate(const double measure, const double partner, const double best,
+                                   const double best_partner)
+  {
+    return measure > best || (measure == best && partner < best_partner);
+  }
+
+  // mean normal stress and sqrt(J2) of a particle of the given volume
+  // from its virial sum w (xx yy zz xy xz yz)
+  MCA_INLINE void particle_stress(const double *w, const int dimension, const double volume,
+                                  double &sigma, double &tau)
+  {
+    const double sxx = -w[0] / volume, syy = -w[1] / volume;
+    const double szz = dimension == 3 ? -w[2] / volume : 0.0;
+    const double sxy = -w[3] / volume;
+    const double sxz = dimension == 3 ? -w[4] / volume : 0.0;
+    const double syz = dimension == 3 ? -w[5] / volume : 0.0;
+    const double mean = (sxx + syy + szz) / dimension;
+    const double dx = sxx - mean, dy = syy - mean, dz = dimension == 3 ? szz - mean : 0.0;
+    sigma = mean;
+    tau = sqrt(0.5 * (dx * dx + dy * dy + dz * dz) + sxy * sxy + sxz * sxz + syz * syz);
+  }
+
+  // what a bond reads of each end: the PSTATE values of the particle
+  struct ParticleState {
+    double sigma, tau, partner;
+  };
+
+  // whether a bond of a particle-criterion type breaks at this evaluation:
+  // it is the candidate of an end whose stress (from the last evaluation)
+  // is on or beyond the ellipse of the bond's type and strength
+  MCA_INLINE bool particle_breaks(const BeamCoeff &c, const ParticleState &si,
+                                  const ParticleState &sj, const double tag_i, const double tag_j,
+                                  const double strength)
+  {
+    if (si.partner == tag_j && elliptic_measure(c, si.sigma, si.tau, strength) >= 1.0) return true;
+    return sj.partner == tag_i && elliptic_measure(c, sj.sigma, sj.tau, strength) >= 1.0;
   }
 
   // the share of a bond's energy and virial summed on this rank (LAMMPS's

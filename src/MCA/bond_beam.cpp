@@ -46,7 +46,7 @@ static const char FIX_ID[] = "BEAM_STATE";
 
 BondBeam::BondBeam(LAMMPS *_lmp) :
     Bond(_lmp), coeffs(nullptr), fix_state(nullptr), L0_max(0.0), nrec(REC_REF + NREF_2D),
-    built_at(-1), built_n(0), breaking(0), damping(0), radii(0), update_special(0),
+    built_at(-1), built_n(0), breaking(0), damping(0), radii(0), particle(0), update_special(0),
     records(nullptr), maxrecords(0)
 {
 }
@@ -100,8 +100,10 @@ void BondBeam::find_state()
    bond_coeff N E A I     [shear G ks] [poisson nu] [section Iy Iz J] [damp beta]
                           [break sigma0 tau0] [bending c]
                           [mohr phi] [scatter uniform w seed | weibull m seed]
+                          [criterion bond | particle]
    bond_coeff N E radii lambda [the same keywords but section; bending c | rim]
    bond_coeff N shearbeam kn kr [twist kt] [damp beta] [break N0 V0] [mohr phi] [scatter ...]
+                                [criterion ...]
    (3-D: a beam needs G, from shear or poisson; a shear beam needs twist)
 ------------------------------------------------------------------------- */
 
@@ -152,7 +154,7 @@ void BondBeam::coeff(int narg, char **arg)
     if (c.model == MODEL_SPRINGS)
       error->all(FLERR, "Bond_coeff beam: {} applies to beams (N E A I), not to shearbeam", word);
   };
-  bool bending = false, mohr = false, twist = false;
+  bool bending = false, mohr = false, twist = false, criterion = false;
   int iarg = 4;
   while (iarg < narg) {
     const std::string word = arg[iarg];
@@ -264,14 +266,27 @@ void BondBeam::coeff(int narg, char **arg)
       c.seed = utils::inumeric(FLERR, arg[iarg + 3], false, lmp);
       if (c.seed <= 0) error->all(FLERR, "Bond_coeff beam: scatter seed = {} must be > 0", c.seed);
       iarg += 4;
+    } else if (word == "criterion") {
+      need(1, "criterion (bond or particle)");
+      const std::string kind = arg[iarg + 1];
+      if (kind == "particle")
+        c.particle = 1;
+      else if (kind == "bond")
+        c.particle = 0;
+      else
+        error->all(FLERR, "Bond_coeff beam: criterion {} is unknown (allowed: bond, particle)",
+                   kind);
+      criterion = true;
+      iarg += 2;
     } else
       error->all(FLERR,
                  "Bond_coeff beam: unknown keyword '{}' (allowed: shear, poisson, section, twist, "
-                 "damp, break, bending, mohr, scatter)",
+                 "damp, break, bending, mohr, scatter, criterion)",
                  word);
   }
-  if (!c.breakable && (bending || mohr || c.scatter))
-    error->all(FLERR, "Bond_coeff beam: bending, mohr and scatter need the break keyword");
+  if (!c.breakable && (bending || mohr || c.scatter || criterion))
+    error->all(FLERR,
+               "Bond_coeff beam: bending, mohr, scatter and criterion need the break keyword");
   if (three_d && c.model == MODEL_BEAM && c.G <= 0.0)
     error->all(FLERR,
                "Bond_coeff beam: a 3-D beam needs the shear modulus for its torsion (poisson nu, "
@@ -307,12 +322,14 @@ void BondBeam::init_style()
 
   estimate_longest_bond();
 
-  breaking = damping = radii = 0;
+  breaking = damping = radii = particle = 0;
   for (int i = 1; i <= atom->nbondtypes; i++) {
     if (coeffs[i].breakable) breaking = 1;
     if (coeffs[i].beta > 0.0) damping = 1;
     if (coeffs[i].radii) radii = 1;
+    if (coeffs[i].particle) particle = 1;
   }
+  fix_state->use_particle_criterion(particle);
   if (damping && !comm->ghost_velocity)
     error->all(FLERR,
                "Bond style beam with damp requires comm_modify vel yes (the damping reads the "
@@ -383,7 +400,7 @@ void BondBeam::fill_records(int nlist, const int *list, long row_stride, long co
   const tagint *tag = atom->tag;
   const int nvalues = nref(domain->dimension);
   const double *radius = atom->radius;
-  int missing = 0, zero = 0, no_radius = 0;
+  int missing = 0, zero = 0, no_radius = 0, no_volume = 0;
   double lmax = 0.0;
   for (int n = 0; n < nlist; n++) {
     const int i1 = list[n * row_stride], i2 = list[n * row_stride + column_stride];
@@ -401,11 +418,14 @@ void BondBeam::fill_records(int nlist, const int *list, long row_stride, long co
         ? strength_factor(coeffs[type], swap ? tag[i2] : tag[i1], swap ? tag[i1] : tag[i2])
         : 1.0;
     if (ref[REF_L0] <= 0.0) zero = 1;
-    if (type > 0 && coeffs[type].radii && !(radius[i1] > 0.0 && radius[i2] > 0.0)) no_radius = type;
+    if (type > 0 && !(radius[i1] > 0.0 && radius[i2] > 0.0)) {
+      if (coeffs[type].radii) no_radius = type;
+      if (coeffs[type].particle) no_volume = type;
+    }
     if (ref[REF_L0] > lmax) lmax = ref[REF_L0];
   }
-  int flags[3] = {missing, zero, no_radius}, flagsall[3];
-  MPI_Allreduce(flags, flagsall, 3, MPI_INT, MPI_MAX, world);
+  int flags[4] = {missing, zero, no_radius, no_volume}, flagsall[4];
+  MPI_Allreduce(flags, flagsall, 4, MPI_INT, MPI_MAX, world);
   if (flagsall[0]) error->all(FLERR, "Bond style beam: a listed bond is not stored by its atom");
   if (flagsall[1])
     error->all(FLERR, "Bond style beam: a bond of zero length (two particles at one place)");
@@ -414,6 +434,12 @@ void BondBeam::fill_records(int nlist, const int *list, long row_stride, long co
                "Bond style beam: a bond of type {} (section from the radii) joins a particle of "
                "radius 0: set the radii > 0 (data file, set diameter)",
                flagsall[2]);
+  if (flagsall[3])
+    error->all(FLERR,
+               "Bond style beam: a bond of type {} (criterion particle) joins a particle of radius "
+               "0, which has no volume for its stress: set the radii > 0 (data file, set "
+               "diameter)",
+               flagsall[3]);
   double all;
   MPI_Allreduce(&lmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
   L0_max = MAX(L0_max, all);
@@ -439,11 +465,18 @@ void BondBeam::compute(int eflag, int vflag)
   }
 
   std::vector<int> broken;
+  if (particle) fix_state->clear_sums(atom->nlocal + atom->nghost);
   if (domain->dimension == 3)
     evaluate<3>(nlist, bondlist, broken);
   else
     evaluate<2>(nlist, bondlist, broken);
   if (breaking) remove_broken(static_cast<int>(broken.size() / 2), broken.data());
+  if (particle) fix_state->decide_particles(force->newton_bond);
+}
+
+bool BondBeam::particle_now() const
+{
+  return particle && !update->setupflag;
 }
 
 /* ----------------------------------------------------------------------
@@ -463,6 +496,8 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   const int newton_bond = force->newton_bond;
   // damping in dynamics only (a minimizer's forces are the energy's gradient)
   const bool damp_now = damping && update->whichflag == 1;
+  const bool decisions = particle_now();
+  const tagint *tag = atom->tag;
   double dissipated = 0.0;
 
   for (int n = 0; n < nlist; n++) {
@@ -478,6 +513,16 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
     const BeamCoeff &c = coeffs[type].radii
         ? bond_coeff(coeffs[type], DIM, radius[i], radius[j], sized)
         : coeffs[type];
+    // (the particle criterion's decision of the last evaluation)
+    const bool decided = decisions && c.particle &&
+        particle_breaks(c, fix_state->particle_state(i), fix_state->particle_state(j), tag[i],
+                        tag[j], rec[REC_STRENGTH]);
+    if (decided) {
+      bondlist[n][2] = 0;
+      broken.push_back(bondlist[n][0]);
+      broken.push_back(bondlist[n][1]);
+      continue;
+    }
     BeamBond out;
     if (damp_now && c.beta > 0.0) {
       BeamRates rates;
@@ -489,11 +534,19 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
       out = beam_bond<DIM>(c, rec + REC_REF, d, quat[i], quat[j], rec[REC_STRENGTH], &rates);
     } else
       out = beam_bond<DIM>(c, rec + REC_REF, d, quat[i], quat[j], rec[REC_STRENGTH]);
-    if (out.measure >= 1.0) {
+    if (out.measure >= 1.0 && !c.particle) {
       bondlist[n][2] = 0;
       broken.push_back(bondlist[n][0]);
       broken.push_back(bondlist[n][1]);
       continue;
+    }
+    if (particle) {
+      // each end's share of the bond's virial; a candidate of each end
+      double w[6];
+      virial_share(d, out.fe, w);
+      const double measure = c.particle ? out.measure : -1.0;
+      if (newton_bond || i < nlocal) fix_state->add_share(i, w, measure, tag[j]);
+      if (newton_bond || j < nlocal) fix_state->add_share(j, w, measure, tag[i]);
     }
     if (newton_bond || i < nlocal) {
       f[i][0] -= out.f[0];
@@ -679,7 +732,7 @@ double BondBeam::equilibrium_distance(int /*type*/)
 ------------------------------------------------------------------------- */
 
 static constexpr int RESTART_TAG = 0x6265616d;    // "beam"
-static constexpr int RESTART_VERSION = 3;         // 2: 3-D sections, damping; 3: radii
+static constexpr int RESTART_VERSION = 4;    // 2: 3-D sections, damping; 3: radii; 4: criterion
 
 void BondBeam::write_restart(FILE *fp)
 {
@@ -732,6 +785,7 @@ void BondBeam::write_data(FILE *fp)
     else if (c.fibre > 0.0)
       line += fmt::format(" bending {:.17g}", c.fibre);
     if (c.mohr) line += fmt::format(" mohr {:.17g}", c.phi_deg);
+    if (c.particle) line += " criterion particle";
     if (c.scatter)
       line += fmt::format(" scatter {} {:.17g} {}",
                           c.scatter == SCATTER_UNIFORM ? "uniform" : "weibull", c.scatter_width,

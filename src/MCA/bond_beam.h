@@ -76,6 +76,12 @@ class BondBeam : public Bond {
   int damping;
   // radii: any type with its sections from the particles' radii (reads radius)
   int radii;
+  // particle: any type broken by the particle criterion (the fix's sums
+  // and states; reads radius); particle_now: this evaluation applies the
+  // decisions of the last one (not at a run's setup, which decides again
+  // from the same state: a run continued or restarted breaks as one run)
+  int particle;
+  bool particle_now() const;
   // update_special: bonded pairs are left out of the pair style (special
   // weights 0 for 1-2, 1 for 1-3 and 1-4): a broken bond leaves the special
   // lists of its atoms on every rank and the neighbor lists are built again

@@ -35,8 +35,8 @@ using namespace BeamKernels;
 ------------------------------------------------------------------------- */
 
 FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), avec(nullptr), maxbond(0), nslot(SLOT_REF + nref(domain->dimension)),
-    state(nullptr), nmax_old(0)
+    Fix(lmp, narg, arg), avec(nullptr), particle_criterion(0), sums(nullptr), pstate(nullptr),
+    maxbond(0), nslot(SLOT_REF + nref(domain->dimension)), state(nullptr), nmax_old(0)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix BEAM_STATE command (internal fix of bond beam)");
   if (!atom->molecular || atom->bond_per_atom <= 0)
@@ -54,7 +54,12 @@ FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
   extscalar = 1;
   ecouple_flag = 1;
   comm_forward = 4;
-  maxexchange = atom->bond_per_atom * nslot;
+  // per-atom array: the particle criterion's state of each particle
+  // (zero unless a bond type uses it)
+  peratom_flag = 1;
+  size_peratom_cols = NPSTATE;
+  peratom_freq = 1;
+  maxexchange = atom->bond_per_atom * nslot + NPSTATE;
   // under KOKKOS: syncs only the orientations, itself (send_orientations)
   datamask_read = EMPTY_MASK;
   datamask_modify = EMPTY_MASK;
@@ -73,6 +78,8 @@ FixBeamState::~FixBeamState()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(state);
+  memory->destroy(sums);
+  memory->destroy(pstate);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -151,6 +158,8 @@ int FixBeamState::pack_forward_comm(int n, int *list, double *buf, int /*pbc_fla
     buf[m++] = q[1];
     buf[m++] = q[2];
     buf[m++] = q[3];
+    if (particle_criterion)
+      for (int c = 0; c < NPSTATE; c++) buf[m++] = pstate[list[k]][c];
   }
   return m;
 }
@@ -164,6 +173,86 @@ void FixBeamState::unpack_forward_comm(int n, int first, double *buf)
     quat[i][1] = buf[m++];
     quat[i][2] = buf[m++];
     quat[i][3] = buf[m++];
+    if (particle_criterion)
+      for (int c = 0; c < NPSTATE; c++) pstate[i][c] = buf[m++];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the particle criterion (BeamKernels::particle_stress), set at each
+   run's init: its sums and their communication exist while bond types
+   use it; the particles' states are cleared when none does any more
+------------------------------------------------------------------------- */
+
+void FixBeamState::use_particle_criterion(int on)
+{
+  // (the bond style's init runs before Comm's, which sizes the buffers)
+  if (!on) {
+    if (particle_criterion)
+      for (int i = 0; i < nmax_old; i++)
+        for (int k = 0; k < NPSTATE; k++) pstate[i][k] = 0.0;
+    particle_criterion = 0;
+    comm_forward = 4;
+    comm_reverse = 0;
+    return;
+  }
+  particle_criterion = 1;
+  comm_forward = 4 + NPSTATE;
+  comm_reverse = NPSUM;
+  memory->grow(sums, atom->nmax, NPSUM, "beam:sums");
+}
+
+void FixBeamState::clear_sums(int n)
+{
+  for (int i = 0; i < n; i++) {
+    for (int k = 0; k < NPSUM; k++) sums[i][k] = 0.0;
+    sums[i][PSUM_MEASURE] = -1.0;    // no candidate
+  }
+}
+
+int FixBeamState::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < NPSUM; k++) buf[m++] = sums[i][k];
+  return m;
+}
+
+void FixBeamState::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    double *s = sums[list[k]];
+    for (int c = 0; c < 6; c++) s[PSUM_VIRIAL + c] += buf[m + PSUM_VIRIAL + c];
+    if (better_candidate(buf[m + PSUM_MEASURE], buf[m + PSUM_PARTNER], s[PSUM_MEASURE],
+                         s[PSUM_PARTNER])) {
+      s[PSUM_MEASURE] = buf[m + PSUM_MEASURE];
+      s[PSUM_PARTNER] = buf[m + PSUM_PARTNER];
+    }
+    m += NPSUM;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   after the bond loop: each owned particle's stress and candidate, kept
+   until the next evaluation (which breaks the bonds it decides)
+------------------------------------------------------------------------- */
+
+void FixBeamState::decide_particles(int newton_bond)
+{
+  // with newton_bond off each owned atom has all its bonds' shares here
+  if (newton_bond) MCACompat::reverse_comm(comm, this);
+  const int dimension = domain->dimension;
+  const double *radius = atom->radius;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double volume = particle_volume(dimension, radius[i]);
+    double *p = pstate[i];
+    // (a particle of radius 0 has no candidate: the bond style refuses it)
+    if (volume > 0.0)
+      particle_stress(sums[i] + PSUM_VIRIAL, dimension, volume, p[PSTATE_SIGMA], p[PSTATE_TAU]);
+    else
+      p[PSTATE_SIGMA] = p[PSTATE_TAU] = 0.0;
+    p[PSTATE_PARTNER] = sums[i][PSUM_MEASURE] >= 0.0 ? sums[i][PSUM_PARTNER] : 0.0;
   }
 }
 
@@ -269,7 +358,8 @@ void FixBeamState::remove_slot(int i, int m)
 
 double FixBeamState::memory_usage()
 {
-  return static_cast<double>(atom->nmax) * maxbond * nslot * sizeof(double);
+  const int per_atom = maxbond * nslot + NPSTATE + (particle_criterion ? NPSUM : 0);
+  return static_cast<double>(atom->nmax) * per_atom * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------
@@ -281,7 +371,13 @@ void FixBeamState::grow_arrays(int nmax)
   const int ncol = (maxbond > 0 ? maxbond : 1) * nslot;
   const int old = state ? nmax_old : 0;
   memory->grow(state, nmax, ncol, "beam:state");
-  for (int i = old; i < nmax; i++) memset(state[i], 0, ncol * sizeof(double));
+  memory->grow(pstate, nmax, NPSTATE, "beam:pstate");
+  for (int i = old; i < nmax; i++) {
+    memset(state[i], 0, ncol * sizeof(double));
+    memset(pstate[i], 0, NPSTATE * sizeof(double));
+  }
+  if (particle_criterion) memory->grow(sums, nmax, NPSUM, "beam:sums");
+  array_atom = pstate;
   nmax_old = nmax;
 }
 
@@ -290,29 +386,36 @@ void FixBeamState::grow_arrays(int nmax)
 void FixBeamState::set_arrays(int i)
 {
   memset(state[i], 0, (maxbond > 0 ? maxbond : 1) * nslot * sizeof(double));
+  memset(pstate[i], 0, NPSTATE * sizeof(double));
 }
 
 void FixBeamState::copy_arrays(int i, int j, int /*delflag*/)
 {
   memcpy(state[j], state[i], maxbond * nslot * sizeof(double));
+  memcpy(pstate[j], pstate[i], NPSTATE * sizeof(double));
 }
 
 /* ----------------------------------------------------------------------
    all slots travel with an atom, the live ones and those beyond the bond
    count (a bond that delete_bonds moved leaves its state there until the
-   bond style sees it again)
+   bond style sees it again), and so does the particle's state (the
+   particle criterion's decision, applied at the next evaluation)
 ------------------------------------------------------------------------- */
 
 int FixBeamState::pack_exchange(int i, double *buf)
 {
-  memcpy(buf, state[i], maxbond * nslot * sizeof(double));
-  return maxbond * nslot;
+  const int n = maxbond * nslot;
+  memcpy(buf, state[i], n * sizeof(double));
+  memcpy(buf + n, pstate[i], NPSTATE * sizeof(double));
+  return n + NPSTATE;
 }
 
 int FixBeamState::unpack_exchange(int nlocal, double *buf)
 {
-  memcpy(state[nlocal], buf, maxbond * nslot * sizeof(double));
-  return maxbond * nslot;
+  const int n = maxbond * nslot;
+  memcpy(state[nlocal], buf, n * sizeof(double));
+  memcpy(pstate[nlocal], buf + n, NPSTATE * sizeof(double));
+  return n + NPSTATE;
 }
 
 /* ----------------------------------------------------------------------

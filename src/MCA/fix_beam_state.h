@@ -36,6 +36,11 @@ namespace LAMMPS_NS {
    the orientations of the owned atoms to their ghosts before the forces
    (atom_style mca sends them only with the ghost shells).  Its scalar is
    the energy the bonds' damping (bond_coeff ... damp) has taken out.
+   With the particle criterion (bond_coeff ... criterion particle) it
+   holds each particle's averaged stress and candidate bond: summed during
+   the bond loop (ghosts' shares sent to their owners), kept per particle
+   (its per-atom array: mean normal stress, sqrt(J2), the candidate's
+   partner ID), sent to the ghosts with the orientations.
 ------------------------------------------------------------------------- */
 
 class FixBeamState : public Fix {
@@ -57,6 +62,8 @@ class FixBeamState : public Fix {
 
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
 
   double memory_usage() override;
   void grow_arrays(int) override;
@@ -87,6 +94,35 @@ class FixBeamState : public Fix {
 
   // the energy the bonds' damping took out so far (the fix's scalar)
   MCAEnergyTally dissipated;
+
+  // the particle criterion: sums (BeamKernels::PSUM_*) of local and ghost
+  // atoms, made when a bond type uses it; what each particle keeps
+  // (PSTATE_*: its array_atom, sent to the ghosts)
+  int particle_criterion;
+  double **sums, **pstate;
+  void use_particle_criterion(int on);
+  void clear_sums(int n);
+  // a bond's share w of atom i's virial sum; with measure >= 0 the bond
+  // is a candidate of atom i with the given partner ID
+  void add_share(int i, const double *w, double measure, double partner)
+  {
+    double *s = sums[i];
+    for (int k = 0; k < 6; k++) s[BeamKernels::PSUM_VIRIAL + k] += w[k];
+    if (measure >= 0.0 &&
+        BeamKernels::better_candidate(measure, partner, s[BeamKernels::PSUM_MEASURE],
+                                      s[BeamKernels::PSUM_PARTNER])) {
+      s[BeamKernels::PSUM_MEASURE] = measure;
+      s[BeamKernels::PSUM_PARTNER] = partner;
+    }
+  }
+  // the ghosts' sums to their owners (newton_bond on), then each owned
+  // particle's stress and candidate
+  void decide_particles(int newton_bond);
+  BeamKernels::ParticleState particle_state(int i) const
+  {
+    return {pstate[i][BeamKernels::PSTATE_SIGMA], pstate[i][BeamKernels::PSTATE_TAU],
+            pstate[i][BeamKernels::PSTATE_PARTNER]};
+  }
 
  private:
   int maxbond;       // bond slots per atom

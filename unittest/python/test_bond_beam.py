@@ -507,7 +507,7 @@ BAD = [
     ("shearbeam bending", "bond_coeff 1 shearbeam 1 1 break 1 1 bending 0.1",
      r"bending \(a fibre stress\) needs a beam section"),
     ("bending alone", "bond_coeff 1 1.0 0.1 0.001 bending 0.1",
-     r"bending, mohr and scatter need the break keyword"),
+     r"bending, mohr, scatter and criterion need the break keyword"),
     ("mohr angle", "bond_coeff 1 1.0 0.1 0.001 break 1 1 mohr 90",
      r"mohr friction angle = 90 must be in \[0, 90\) degrees"),
     ("scatter kind", "bond_coeff 1 1.0 0.1 0.001 break 1 1 scatter normal 0.1 5",
@@ -718,7 +718,11 @@ def bonds_in_data(path):
     return header, len([line for line in section.splitlines() if line.strip()])
 
 
-def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail="", extra=""):
+STRIP_COEFF = f"{E_} {A_} {I_} break {SIGMA0} {TAU0} bending {FIBRE} scatter uniform 0.3 77"
+
+
+def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail="", extra="",
+              coeff=STRIP_COEFF):
     nx, ny = 14, 4
     sites = []
     for j in range(2 * ny):
@@ -732,7 +736,7 @@ def strip_run(build, directory, nprocs=1, newton="on", extra_args=(), tail="", e
     data = beam_data(directory / "strip.data", sites, bonds, ((-1, 16), (-1, 8)))
     script = header(data, newton=newton, extra=extra) + f"""
 bond_style      beam
-bond_coeff      1 {E_} {A_} {I_} break {SIGMA0} {TAU0} bending {FIBRE} scatter uniform 0.3 77
+bond_coeff      1 {coeff}
 variable        left atom x<0.4
 variable        right atom x>{nx - 1.1}
 group           left variable left
@@ -761,25 +765,35 @@ def compare_strips(ref, other, name):
     assert diff < 1e-9
 
 
-def test_torn_strip_is_the_same_on_ranks_newton_and_restart(build, tmp_path):
-    ref = strip_run(build, tmp_path / "ref")
+def strip_on_ranks_newton_and_restart(build, directory, coeff=STRIP_COEFF, split=1000):
+    """The strip on 1 rank, then on 2 ranks and with newton_bond off, and
+    continued from a restart file written at step `split`: the same
+    bond counts at every thermo step and the same end state (1e-9)."""
+    ref = strip_run(build, directory / "ref", coeff=coeff)
     assert ref[0]["Bonds"][-1] < ref[0]["Bonds"][0] - 5    # it does tear
     for nprocs, newton in ((2, "on"), (1, "off"), (2, "off")):
-        compare_strips(ref, strip_run(build, tmp_path / f"{nprocs}{newton}", nprocs, newton),
+        compare_strips(ref, strip_run(build, directory / f"{nprocs}{newton}", nprocs, newton,
+                                      coeff=coeff),
                        f"{nprocs} ranks, newton_bond {newton}")
-    strip_run(build, tmp_path / "split", tail="run 1000\nwrite_restart half.restart\n")
+    strip_run(build, directory / "split", tail=f"run {split}\nwrite_restart half.restart\n",
+              coeff=coeff)
     restart = """
 units           lj
 dimension       2
 read_restart    half.restart
 comm_modify     cutoff 2.5
-""" + STRIP_DYNAMICS.format(every=1000) + "run 1000\n" + WRITE_FINAL
-    build.run(restart, tmp_path / "split")
-    header_count, listed = bonds_in_data(tmp_path / "split" / "final.data")
-    resumed = (mcatest.read_thermo(tmp_path / "split" / "log.lammps"),
-               read_dump(tmp_path / "split" / "strip.dump"))
+""" + STRIP_DYNAMICS.format(every=2000) + f"run {2000 - split}\n" + WRITE_FINAL
+    build.run(restart, directory / "split")
+    header_count, listed = bonds_in_data(directory / "split" / "final.data")
+    resumed = (mcatest.read_thermo(directory / "split" / "log.lammps"),
+               read_dump(directory / "split" / "strip.dump"))
     assert header_count == listed == int(resumed[0]["Bonds"][-1])
-    compare_strips(ref, resumed, "restart at step 1000")
+    compare_strips(ref, resumed, f"restart at step {split}")
+    return ref
+
+
+def test_torn_strip_is_the_same_on_ranks_newton_and_restart(build, tmp_path):
+    strip_on_ranks_newton_and_restart(build, tmp_path)
 
 
 def test_kokkos_strip_tears_as_the_cpu_style(tmp_path):
