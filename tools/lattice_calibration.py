@@ -10,8 +10,21 @@ unit thickness):
 * MLP, movable lattice particles (pair_style mlp): each bond is the linear
   spring k1 I + k2 e e^T of the paper's Eq. 2 on the full relative
   displacement; k1 = n f0 / c (the return force), k2 = U''(c) - k1.  The
-  k1 part is not objective: mu = sqrt3 (k1 + k2/4), lambda = sqrt3 (k2/4 - k1)
-  (the corrected Eq. 11; the paper's has half these values).
+  k1 part is not objective: for a displacement gradient H the energy per
+  area is
+    w = (sqrt3/2) k1 H:H + (sqrt3/8) k2 ((tr H)^2 + H:H + H:H^T),
+  the isotropic energy of mu = sqrt3 (k1 + k2/4), lambda = sqrt3 (k2/4 - k1)
+  (the corrected Eq. 11; the paper's has half these values) plus the null
+  Lagrangian sqrt3 k1 det H (which holds the energy of a rotation too).  Two
+  sets of moduli follow (kind "waves" or "static" below):
+    waves   Eq. 11's: those of the field equations in the bulk, so of
+            long waves and of the displacements of problems with
+            prescribed displacements;
+    static  mu = (sqrt3/2)(k1 + k2/2), lambda = (sqrt3/4) k2: the stress
+            of a homogeneous strain (the null Lagrangian's included), so
+            those of a tension or compression test loaded by forces
+            (nu_2D = k2 / (3 k2 + 4 k1),
+            E_2D = 2 sqrt3 (2 k1 + k2)(k1 + k2) / (4 k1 + 3 k2)).
 * beams and shear beams (NUMFRAC): a normal stiffness k_n and an objective
   transverse stiffness k_s on the strain part of the relative displacement
   (the particles' rotations relax): mu = (sqrt3/4)(k_n + k_s),
@@ -26,6 +39,7 @@ Command line (prints the parameters and the moduli they give back):
 
   tools/lattice_calibration.py mlp  --E2 E --nu2 NU [--c 1] [--n 6]
                                     [--potential harmonic|morse|lj] [--D0 1]
+                                    [--moduli waves|static]
   tools/lattice_calibration.py beam --E2 E --nu2 NU [--c 1] [--E-bond E]
   (--E E --nu NU --thickness T --plane strain|stress instead of --E2 --nu2)
 
@@ -93,20 +107,32 @@ def mlp_moduli(k1, k2):
     return moduli(SQRT3 * (k1 + k2 / 4.0), SQRT3 * (k2 / 4.0 - k1))
 
 
-def mlp_springs(e2, nu2):
-    """(k1, k2) that give E_2D and nu_2D."""
+def mlp_static_moduli(k1, k2):
+    """Moduli of the stress of a homogeneous strain of the hexagonal k1/k2
+    lattice (C11 = lambda + 2 mu, C12 = lambda): those of a body loaded by
+    forces in a uniform state (a tension test, a pressed slab)."""
+    return moduli(SQRT3 / 2.0 * (k1 + k2 / 2.0), SQRT3 / 4.0 * k2)
+
+
+def mlp_springs(e2, nu2, kind="waves"):
+    """(k1, k2) that give E_2D and nu_2D as the moduli of the given kind
+    (waves: Eq. 11's, mlp_moduli; static: mlp_static_moduli)."""
     _check_reachable(nu2, "movable lattice particle")
     mu, lam = lame(e2, nu2)
+    if kind == "static":
+        return 2.0 * (mu - lam) / SQRT3, 4.0 * lam / SQRT3
+    if kind != "waves":
+        raise CalibrationError(f"moduli {kind}: allowed waves, static")
     return (mu - lam) / (2.0 * SQRT3), 2.0 * (lam + mu) / SQRT3
 
 
-def mlp_pair(e2, nu2, c=1.0, n=6):
-    """(U''(c), f0) of pair_style mlp for E_2D, nu_2D on a hexagonal lattice
-    of spacing c: k1 = n f0 / c, U'' = k1 + k2."""
+def mlp_pair(e2, nu2, c=1.0, n=6, kind="waves"):
+    """(U''(c), f0) of pair_style mlp for E_2D, nu_2D (moduli of the given
+    kind) on a hexagonal lattice of spacing c: k1 = n f0 / c, U'' = k1 + k2."""
     if n != 6:
         raise CalibrationError("the isotropic moduli are those of the hexagonal lattice (n = 6); "
                                "a square lattice (n = 4) is cubic: C11 = U'', C44 = 4 f0 / c")
-    k1, k2 = mlp_springs(e2, nu2)
+    k1, k2 = mlp_springs(e2, nu2, kind)
     return k1 + k2, c * k1 / n
 
 
@@ -188,6 +214,9 @@ def main(argv=None):
     ap.add_argument("--c", type=float, default=1.0, help="lattice spacing")
     ap.add_argument("--potential", choices=("harmonic", "morse", "lj"), default="harmonic")
     ap.add_argument("--D0", type=float, default=1.0, help="Morse bond energy")
+    ap.add_argument("--moduli", choices=("waves", "static"), default="waves",
+                    help="mlp: the moduli to give E and nu: of the field equations and long "
+                    "waves (Eq. 11), or of a homogeneous strain's stress (a body loaded by forces)")
     ap.add_argument("--E-bond", type=float, default=None,
                     help="beam: the beam material's E (gives A and I of the section)")
     args = ap.parse_args(argv)
@@ -200,13 +229,21 @@ def main(argv=None):
             raise CalibrationError("give --E2 and --nu2, or --E and --nu")
         lines = [f"target: E_2D {e2:.10g}, nu_2D {nu2:.10g}, spacing c {args.c:g}"]
         if args.lattice == "mlp":
-            upp, f0 = mlp_pair(e2, nu2, args.c)
-            k1, k2 = mlp_springs(e2, nu2)
+            upp, f0 = mlp_pair(e2, nu2, args.c, kind=args.moduli)
+            k1, k2 = mlp_springs(e2, nu2, args.moduli)
             lines += [f"k1 {k1:.10g}, k2 {k2:.10g}, U''(c) {upp:.10g}, f0 {f0:.10g}",
                       f"pair_coeff * * {central_potential(args.potential, upp, args.c, args.D0)}"
                       f" {f0:.12g} 6 0.0"]
-            print(_report(lines, mlp_moduli(k1, k2)))
+            other = "static" if args.moduli == "waves" else "waves"
+            given = mlp_moduli(k1, k2) if args.moduli == "waves" else mlp_static_moduli(k1, k2)
+            back = mlp_static_moduli(k1, k2) if args.moduli == "waves" else mlp_moduli(k1, k2)
+            lines.append(f"({other} moduli of these parameters: E_2D {back['E2']:.10g}, "
+                         f"nu_2D {back['nu2']:.10g})")
+            print(_report(lines, given))
         else:
+            if args.moduli != "waves":
+                raise CalibrationError("--moduli applies to mlp lattices (a beam lattice's "
+                                       "moduli are of one kind)")
             kn, ks = beam_springs(e2, nu2)
             lines.append(f"k_n {kn:.10g}, k_s {ks:.10g}, shear beam k_r {shear_beam_kr(ks, args.c):.10g}")
             if args.E_bond:

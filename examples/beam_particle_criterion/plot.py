@@ -5,6 +5,7 @@ particle: the ellipse of the particles' mean stress and sqrt(J2), each the
 continuum stress over the discs' area fraction); the figures printed."""
 
 import math
+import os
 import pathlib
 import sys
 
@@ -14,7 +15,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "tools"))
+# (tools/mca run copies the example elsewhere and sets MCA_ROOT)
+ROOT = pathlib.Path(os.environ.get("MCA_ROOT", pathlib.Path(__file__).resolve().parents[2]))
+sys.path.insert(0, str(ROOT / "tools"))
 import lattice_calibration as lc  # noqa: E402
 
 E, H, SIGMA0, TAU0 = 100.0, 0.3, 0.2, 0.2

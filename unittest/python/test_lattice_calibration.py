@@ -12,6 +12,13 @@ NUMFRAC/MLP notes A.4, B.2, reference cases 6-8):
   target E_2D and nu_2D has them: its long-wave stiffness (two wavelengths,
   extrapolated to q -> 0, independent of the corrected Eq. 11) gives E_2D
   and nu_2D to 1e-5;
+* the static moduli (--moduli static): the stress of a homogeneous strain
+  (a periodic lattice stretched along x: C11 and C12 from its pressure)
+  has the target E_2D and nu_2D to 1e-5, and the lattice calibrated by
+  its waves has the static moduli the tool gives for its springs (the two
+  differ: the null Lagrangian sqrt3 k1 det grad u of the return force
+  acts on the stress of a homogeneous strain, not on the field
+  equations);
 * nu_2D above 1/3 (unreachable with a restoring transverse stiffness) is
   refused with the reason, on the command line too.
 """
@@ -33,9 +40,14 @@ SQRT3 = math.sqrt(3.0)
 TOOL = mcatest.ROOT / "tools" / "lattice_calibration.py"
 
 
+def static_springs(e2, nu2):
+    return lc.mlp_springs(e2, nu2, "static")
+
+
 @pytest.mark.parametrize("nu2", np.linspace(-0.9, 1.0 / 3.0, 9))
 def test_maps_and_inverses_agree(nu2):
-    for springs, moduli in ((lc.mlp_springs, lc.mlp_moduli), (lc.beam_springs, lc.beam_moduli)):
+    for springs, moduli in ((lc.mlp_springs, lc.mlp_moduli), (lc.beam_springs, lc.beam_moduli),
+                            (static_springs, lc.mlp_static_moduli)):
         a, b = springs(2.7, nu2)
         back = moduli(a, b)
         assert back["E2"] == pytest.approx(2.7, rel=1e-12)
@@ -66,7 +78,7 @@ def test_reference_cases():
 
 
 def test_unreachable_moduli_are_refused():
-    for springs in (lc.mlp_springs, lc.beam_springs):
+    for springs in (lc.mlp_springs, lc.beam_springs, static_springs):
         with pytest.raises(lc.CalibrationError, match=r"nu_2D = 0.4 > 1/3.*at most 1/3"):
             springs(1.0, 0.4)
         with pytest.raises(lc.CalibrationError, match=r"nu_2D = -1 must be in \(-1, 1\)"):
@@ -78,6 +90,10 @@ def test_unreachable_moduli_are_refused():
     # plane strain: nu_2D = 0.3 / 0.7 > 1/3
     assert result.returncode == 2
     assert "nu_2D = 0.428571 > 1/3" in result.stderr
+    result = subprocess.run([sys.executable, str(TOOL), "beam", "--E2", "1", "--nu2", "0.2",
+                             "--moduli", "static"], capture_output=True, text=True)
+    assert result.returncode == 2
+    assert "--moduli applies to mlp lattices" in result.stderr
 
 
 def long_wave_moduli(build, directory, coeff):
@@ -110,3 +126,49 @@ def test_lattice_built_from_the_tool_has_the_moduli(build, tmp_path, potential, 
           f"E_2D {e2_wave:.8f}, nu_2D {nu2_wave:.8f}")
     assert e2_wave == pytest.approx(e2, rel=1e-5)
     assert nu2_wave == pytest.approx(nu2, abs=1e-5)
+
+
+def homogeneous_moduli(build, directory, coeff, strain=1e-6):
+    """E_2D and nu_2D of the stress of a homogeneous strain: a periodic
+    hexagonal lattice (spacing 1) stretched along x, C11 and C12 from its
+    pressure (2-D: minus the stress, force per length)."""
+    from test_pair_mlp import data_file, header, hex_sites
+    sites = hex_sites(12, 7)
+    data = data_file(directory / "lattice.data", sites, ((-0.25, 11.75), (-0.25, 7 * SQRT3 - 0.25)))
+    script = header(data.name) + f"""pair_style mlp 1.3 taper 0.2
+pair_coeff 1 1 {coeff}
+thermo_style custom step pxx pyy
+thermo_modify norm no format float %.17g
+run 0 post no
+change_box all x scale {1.0 + strain!r} remap
+run 0 post no
+"""
+    build.run(script, directory)
+    thermo = mcatest.read_thermo(directory / "log.lammps")
+    c11, c12 = -thermo["Pxx"][-1] / strain, -thermo["Pyy"][-1] / strain
+    return (c11 * c11 - c12 * c12) / c11, c12 / c11
+
+
+@pytest.mark.parametrize("potential,e2,nu2", [("harmonic", 1.0, 0.2), ("morse", 3.0, -0.25)])
+def test_static_moduli_are_those_of_a_homogeneous_strain(build, tmp_path, potential, e2, nu2):
+    upp, f0 = lc.mlp_pair(e2, nu2, kind="static")
+    coeff = f"{lc.central_potential(potential, upp, 1.0, 2.0)} {f0:.17g} 6 0.0"
+    result = subprocess.run([sys.executable, str(TOOL), "mlp", "--E2", str(e2), "--nu2", str(nu2),
+                             "--potential", potential, "--D0", "2", "--moduli", "static"],
+                            capture_output=True, text=True, check=True)
+    assert f"pair_coeff * * {lc.central_potential(potential, upp, 1.0, 2.0)}" in result.stdout
+    e2_static, nu2_static = homogeneous_moduli(build, tmp_path / "static", coeff)
+    # the lattice calibrated by its waves for the same targets: other static moduli
+    upp_w, f0_w = lc.mlp_pair(e2, nu2)
+    coeff_w = f"{lc.central_potential(potential, upp_w, 1.0, 2.0)} {f0_w:.17g} 6 0.0"
+    e2_w, nu2_w = homogeneous_moduli(build, tmp_path / "waves", coeff_w)
+    expected = lc.mlp_static_moduli(*lc.mlp_springs(e2, nu2))
+    print(f"{potential}: target E_2D {e2}, nu_2D {nu2}; static calibration: E_2D "
+          f"{e2_static:.8f}, nu_2D {nu2_static:.8f}; wave calibration: E_2D {e2_w:.8f}, "
+          f"nu_2D {nu2_w:.8f} (tool: {expected['E2']:.8f}, {expected['nu2']:.8f})")
+    # a strain of 1e-6: the geometric nonlinearity is of that order
+    assert e2_static == pytest.approx(e2, rel=1e-5)
+    assert nu2_static == pytest.approx(nu2, abs=1e-5)
+    assert e2_w == pytest.approx(expected["E2"], rel=1e-5)
+    assert nu2_w == pytest.approx(expected["nu2"], abs=1e-5)
+    assert abs(nu2_w - nu2) > 0.05    # the two kinds differ
