@@ -61,8 +61,7 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
   // states of the last evaluation, their sums, each bond's measure
   view<decltype(AtomKokkos::k_tag)> tag;
   MCAKokkos::double_2d<DeviceType> pstate;
-  atomic_view<MCAKokkos::double_2d<DeviceType>> psum;
-  MCAKokkos::double_2d<DeviceType> psum_cells;    // (the same, for atomic max)
+  MCAKokkos::double_2d<DeviceType> psum;    // (atomic add and max)
   MCAKokkos::double_1d<DeviceType> bond_measure;
   int particle, particle_now;
   int nlocal, newton_bond;
@@ -131,13 +130,13 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
       double w[6];
       virial_share(d, out.fe, w);
       for (int k = 0; k < 6; k++) {
-        if (own_i) psum(i, PSUM_VIRIAL + k) += w[k];
-        if (own_j) psum(j, PSUM_VIRIAL + k) += w[k];
+        if (own_i) Kokkos::atomic_add(&psum(i, PSUM_VIRIAL + k), w[k]);
+        if (own_j) Kokkos::atomic_add(&psum(j, PSUM_VIRIAL + k), w[k]);
       }
       if (c.particle) {
         bond_measure(n) = out.measure;
-        if (own_i) Kokkos::atomic_fetch_max(&psum_cells(i, PSUM_MEASURE), out.measure);
-        if (own_j) Kokkos::atomic_fetch_max(&psum_cells(j, PSUM_MEASURE), out.measure);
+        if (own_i) Kokkos::atomic_fetch_max(&psum(i, PSUM_MEASURE), out.measure);
+        if (own_j) Kokkos::atomic_fetch_max(&psum(j, PSUM_MEASURE), out.measure);
       }
     }
     if (own_i) {
@@ -394,7 +393,6 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
     kernel.tag = atomKK->k_tag.template view<DeviceType>();
     kernel.pstate = d_pstate;
     kernel.psum = d_psum;
-    kernel.psum_cells = d_psum;
     kernel.bond_measure = d_bond_measure;
   }
   kernel.f = atomKK->k_f.template view<DeviceType>();

@@ -642,6 +642,15 @@ namespace BeamKernels {
     return measure > best || (measure == best && partner < best_partner);
   }
 
+  // a particle's sums (PSUM_*) take the candidate (measure, partner) if it is better
+  MCA_INLINE void take_candidate(double *sum, const double measure, const double partner)
+  {
+    if (better_candidate(measure, partner, sum[PSUM_MEASURE], sum[PSUM_PARTNER])) {
+      sum[PSUM_MEASURE] = measure;
+      sum[PSUM_PARTNER] = partner;
+    }
+  }
+
   // mean normal stress and sqrt(J2) of a particle of the given volume
   // from its virial sum w (xx yy zz xy xz yz)
   MCA_INLINE void particle_stress(const double *w, const int dimension, const double volume,

@@ -500,6 +500,12 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   const tagint *tag = atom->tag;
   double dissipated = 0.0;
 
+  // a bond that breaks: type 0 in the list, its ends to remove_broken
+  auto drop = [&](int n) {
+    bondlist[n][2] = 0;
+    broken.push_back(bondlist[n][0]);
+    broken.push_back(bondlist[n][1]);
+  };
   for (int n = 0; n < nlist; n++) {
     const int type = bondlist[n][2];
     if (type <= 0) continue;
@@ -518,9 +524,7 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
         particle_breaks(c, fix_state->particle_state(i), fix_state->particle_state(j), tag[i],
                         tag[j], rec[REC_STRENGTH]);
     if (decided) {
-      bondlist[n][2] = 0;
-      broken.push_back(bondlist[n][0]);
-      broken.push_back(bondlist[n][1]);
+      drop(n);
       continue;
     }
     BeamBond out;
@@ -535,9 +539,7 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
     } else
       out = beam_bond<DIM>(c, rec + REC_REF, d, quat[i], quat[j], rec[REC_STRENGTH]);
     if (out.measure >= 1.0 && !c.particle) {
-      bondlist[n][2] = 0;
-      broken.push_back(bondlist[n][0]);
-      broken.push_back(bondlist[n][1]);
+      drop(n);
       continue;
     }
     if (particle) {

@@ -224,11 +224,7 @@ void FixBeamState::unpack_reverse_comm(int n, int *list, double *buf)
   for (int k = 0; k < n; k++) {
     double *s = sums[list[k]];
     for (int c = 0; c < 6; c++) s[PSUM_VIRIAL + c] += buf[m + PSUM_VIRIAL + c];
-    if (better_candidate(buf[m + PSUM_MEASURE], buf[m + PSUM_PARTNER], s[PSUM_MEASURE],
-                         s[PSUM_PARTNER])) {
-      s[PSUM_MEASURE] = buf[m + PSUM_MEASURE];
-      s[PSUM_PARTNER] = buf[m + PSUM_PARTNER];
-    }
+    take_candidate(s, buf[m + PSUM_MEASURE], buf[m + PSUM_PARTNER]);
     m += NPSUM;
   }
 }

@@ -108,12 +108,7 @@ class FixBeamState : public Fix {
   {
     double *s = sums[i];
     for (int k = 0; k < 6; k++) s[BeamKernels::PSUM_VIRIAL + k] += w[k];
-    if (measure >= 0.0 &&
-        BeamKernels::better_candidate(measure, partner, s[BeamKernels::PSUM_MEASURE],
-                                      s[BeamKernels::PSUM_PARTNER])) {
-      s[BeamKernels::PSUM_MEASURE] = measure;
-      s[BeamKernels::PSUM_PARTNER] = partner;
-    }
+    if (measure >= 0.0) BeamKernels::take_candidate(s, measure, partner);
   }
   // the ghosts' sums to their owners (newton_bond on), then each owned
   // particle's stress and candidate
