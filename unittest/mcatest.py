@@ -16,7 +16,6 @@ build named by MCA_TEST_KOKKOS (default kokkos).
 
 import os
 import pathlib
-import shutil
 import subprocess
 
 import numpy as np
@@ -160,6 +159,13 @@ def kokkos_args(threads=2):
                         "two-thread case runs")
         return ("-k", "on", "g", "1", "-sf", "kk")
     return ("-k", "on", "t", str(threads), "-sf", "kk")
+
+
+def kokkos_thread_counts():
+    """The host thread counts a test that loops over Kokkos runs takes:
+    (1, 2), or (2,) with a GPU build, whose device run kokkos_args(2)
+    makes (kokkos_args(1) would skip the whole test there)."""
+    return (2,) if on_gpu() else (1, 2)
 
 
 # ---------------------------------------------------------------------------

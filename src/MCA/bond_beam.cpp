@@ -645,7 +645,7 @@ bool BondBeam::forget_broken_pairs(int nbroken, const int *pairs)
     mine[2 * b + 1] = MAX(t1, t2);
   }
   const int nprocs = comm->nprocs;
-  const int count = 2 * nbroken;
+  int count = 2 * nbroken;    // not const: the MPI stubs of a serial build take void *
   std::vector<int> counts(nprocs), displs(nprocs);
   MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
   int all = 0;

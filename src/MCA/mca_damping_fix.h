@@ -54,8 +54,9 @@ class MCAEnergyTally {
 
   double total(MPI_Comm world) const
   {
-    double all = 0.0;
-    MPI_Allreduce(&local, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+    // a copy: the MPI stubs of a serial build take a non-const send buffer
+    double mine = local, all = 0.0;
+    MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, world);
     return all;
   }
 

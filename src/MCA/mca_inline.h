@@ -14,13 +14,24 @@
 /* ----------------------------------------------------------------------
    MCA_INLINE: how the MCA kernels (mca_*.h) are declared.  Plain
    arithmetic on doubles, no LAMMPS or STL objects, so that the CPU styles
-   and the Kokkos styles (host or device) call the same functions.  In a
-   Kokkos translation unit Kokkos_Core.hpp is included first and MCA_INLINE
-   becomes KOKKOS_INLINE_FUNCTION.
+   and the Kokkos styles (host or device) call the same functions.  In
+   the sources of KOKKOS_MCA (compiled with MCA_KOKKOS_KERNELS, see
+   cmake/Modules/Packages/MCA.cmake) MCA_INLINE is KOKKOS_INLINE_FUNCTION.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_MCA_INLINE_H
 #define LMP_MCA_INLINE_H
+
+// A Kokkos style's source sees Kokkos' function macros whichever header
+// came first: one whose header included its CPU style's header, and so
+// the kernels, before Kokkos made them host functions, which CUDA device
+// code cannot call (nvcc only warns, and the call computed nothing on the
+// GPU: bond beam/kk, found on an H200 on 28 Nov 2026).  (The CPU styles'
+// sources keep host functions: there the kernels are called with host
+// accessors, which a host-and-device function may not call.)
+#if defined(MCA_KOKKOS_KERNELS) && !defined(KOKKOS_INLINE_FUNCTION)
+#include <Kokkos_Macros.hpp>
+#endif
 
 // internal linkage: the kernels are inlined and never called through the
 // procedure linkage table of the shared library

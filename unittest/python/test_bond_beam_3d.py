@@ -423,11 +423,14 @@ def test_bending_breaks_on_the_ellipse_of_its_plane(build, tmp_path, axis, inert
 def test_kokkos_breaks_at_the_same_thresholds(tmp_path):
     kk = mcatest.kokkos_build()
     theta = threshold(lambda t: bending_measure(t, IZ))
-    assert threshold_probe(kk, tmp_path / "bend", turn_first("z"), theta * (1 - 1e-9),
-                           theta * (1 + 1e-9), extra_args=mcatest.kokkos_args(1)) == [1, 0]
     p_star = 2 * math.atan(0.5 * TAU0 / (FIBRE * G_))
-    assert threshold_probe(kk, tmp_path / "twist", turn_first("x"), -p_star * (1 - 1e-9),
-                           -p_star * (1 + 1e-9), extra_args=mcatest.kokkos_args(1)) == [1, 0]
+    for threads in mcatest.kokkos_thread_counts():
+        args = mcatest.kokkos_args(threads)
+        assert threshold_probe(kk, tmp_path / f"bend{threads}", turn_first("z"),
+                               theta * (1 - 1e-9), theta * (1 + 1e-9), extra_args=args) == [1, 0]
+        assert threshold_probe(kk, tmp_path / f"twist{threads}", turn_first("x"),
+                               -p_star * (1 - 1e-9), -p_star * (1 + 1e-9),
+                               extra_args=args) == [1, 0]
 
 
 def test_large_turns_stiffen_up_to_a_half_turn(build, tmp_path):

@@ -123,13 +123,16 @@ def test_broken_pair_across_ranks(build, tmp_path, newton):
 def test_kokkos_broken_pair_meets_the_pair_style(tmp_path):
     kk = mcatest.kokkos_build()
     ref, r_ref = pulled_pair(kk, tmp_path / "cpu")
-    thermo, r = pulled_pair(kk, tmp_path / "kk", extra_args=mcatest.kokkos_args(1))
-    log = (tmp_path / "kk" / "log.lammps").read_text()
-    assert "pair lj/cut/kk" in log    # (Kokkos neighbor lists)
-    diff = np.abs(thermo["E_vdwl"] - ref["E_vdwl"]).max() / np.abs(ref["E_vdwl"]).max()
-    print(f"kk: pair energy to {diff:.1e}, distance to {np.abs(r - r_ref).max():.1e}")
-    assert np.array_equal(thermo["Bonds"], ref["Bonds"])
-    assert diff < 1e-13 and np.abs(r - r_ref).max() < 1e-13
+    for threads in mcatest.kokkos_thread_counts():
+        thermo, r = pulled_pair(kk, tmp_path / f"kk{threads}",
+                                extra_args=mcatest.kokkos_args(threads))
+        log = (tmp_path / f"kk{threads}" / "log.lammps").read_text()
+        assert "pair lj/cut/kk" in log    # (Kokkos neighbor lists)
+        diff = np.abs(thermo["E_vdwl"] - ref["E_vdwl"]).max() / np.abs(ref["E_vdwl"]).max()
+        print(f"kk {threads} thread(s): pair energy to {diff:.1e}, distance to "
+              f"{np.abs(r - r_ref).max():.1e}")
+        assert np.array_equal(thermo["Bonds"], ref["Bonds"])
+        assert diff < 1e-13 and np.abs(r - r_ref).max() < 1e-13
 
 
 # a weak cohesion between broken neighbours: the LJ minimum at the lattice

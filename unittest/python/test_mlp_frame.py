@@ -244,7 +244,7 @@ def test_kokkos_variant_matches_the_cpu_style(tmp_path, style):
         f"displace_atoms right rotate {c[0]:.17g} {c[1]:.17g} 0 0 0 1 3\n"
         "thermo_style custom step pe\n")
     ref, (pe_ref,) = forces_and_log(build, tmp_path / "cpu", script)
-    for threads in (1, 2):
+    for threads in mcatest.kokkos_thread_counts():
         directory = tmp_path / f"kk{threads}"
         snap, (pe,) = forces_and_log(build, directory, script,
                                      extra_args=mcatest.kokkos_args(threads))
@@ -263,7 +263,7 @@ def test_kokkos_variant_follows_the_cpu_trajectory(tmp_path):
     data_file(tmp_path / "disc.data", patch(), ((-12, 12), (-12, 12)))
     build.run(spin_script("../disc.data", True, 400, every=5), tmp_path / "cpu")
     ref = final_state(tmp_path / "cpu")
-    for threads in (1, 2):
+    for threads in mcatest.kokkos_thread_counts():
         directory = tmp_path / f"kk{threads}"
         build.run(spin_script("../disc.data", True, 400, every=5), directory,
                   extra_args=mcatest.kokkos_args(threads))

@@ -277,7 +277,7 @@ def test_ranks_and_restart(build, tmp_path):
 def test_kokkos_variant_matches_the_cpu_fix(tmp_path):
     build = mcatest.kokkos_build()
     ref, taken = damped_run(build, tmp_path / "cpu")
-    for threads in (1, 2):
+    for threads in mcatest.kokkos_thread_counts():
         kk, taken_kk = damped_run(build, tmp_path / f"kk{threads}",
                                   extra_args=mcatest.kokkos_args(threads))
         log = (tmp_path / f"kk{threads}" / "log.lammps").read_text()

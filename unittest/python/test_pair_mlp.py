@@ -443,7 +443,7 @@ def test_newton_and_ranks_do_not_change_the_forces(build, tmp_path, style):
 def test_kokkos_variant_matches_the_cpu_style(tmp_path, style):
     build = mcatest.kokkos_build()
     ref = disordered_forces(build, tmp_path / "cpu", style)
-    for threads in (1, 2):
+    for threads in mcatest.kokkos_thread_counts():
         kk = disordered_forces(build, tmp_path / f"kk{threads}", style,
                                extra_args=mcatest.kokkos_args(threads))
         log = (tmp_path / f"kk{threads}" / "log.lammps").read_text()

@@ -95,6 +95,11 @@ if(PKG_KOKKOS)
     target_include_directories(lammps PRIVATE ${KOKKOS_MCA_SOURCES_DIR})
     list(LENGTH _kokkos_mca_sources _n)
     message(STATUS "KOKKOS_MCA: ${_n} Kokkos style source files")
+    # the shared kernels (mca_inline.h) are Kokkos functions in these files
+    # whatever the order of their headers (a host function there cannot be
+    # called from device code)
+    set_property(SOURCE ${_kokkos_mca_sources} APPEND PROPERTY COMPILE_DEFINITIONS
+                 MCA_KOKKOS_KERNELS)
     # nvcc contracts a*b + c into fused multiply-adds by default, which
     # rounds once where the CPU rounds twice; off: the GPU kernels do the
     # CPU styles' arithmetic (to compare them with the CPU to round-off)
