@@ -26,12 +26,20 @@ from run import parse_log
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 GPU = ["-k", "on", "g", "1", "-sf", "kk"]
+# gran/hooke/history/kk computes on a half list (newton on: each contact once)
+GRAN_PACKAGE = "neigh half newton on"
+
+
+def gran_mode(package=GRAN_PACKAGE):
+    """in.bench's style and geometry and the arguments of gran/hooke/history/kk
+    with the '-pk kokkos' keywords `package` (also bench/gpu_profile.py's)."""
+    return ("gran_hooke", "periodic", GPU + ["-pk", "kokkos"] + package.split())
+
+
 MODES = {  # name: (style and geometry of in.bench, extra command-line arguments)
     "cpu": ("mca", "cube", []),
     "kk_gpu": ("mca", "cube", GPU),
-    # gran/hooke/history/kk computes on a half list (newton on: each contact once)
-    "gran_kk_gpu": ("gran_hooke", "periodic", GPU + ["-pk", "kokkos", "neigh", "half",
-                                                     "newton", "on"]),
+    "gran_kk_gpu": gran_mode(),
 }
 # timed steps: some seconds per run; the CPU runs are shorter (one core)
 STEPS = {"cpu": {20: 100, 40: 20, 60: 10}, "kk_gpu": {20: 2000, 40: 1000, 60: 400},
@@ -67,12 +75,11 @@ def main():
     ap.add_argument("--modes", nargs="+", choices=list(MODES), default=list(MODES))
     ap.add_argument("--out", default=os.path.join(HERE, "results"))
     ap.add_argument("--csv", default="gpu.csv", help="name of the table in --out")
-    ap.add_argument("--gran-package", default=" ".join(MODES["gran_kk_gpu"][2][len(GPU) + 2:]),
+    ap.add_argument("--gran-package", default=GRAN_PACKAGE,
                     help="the '-pk kokkos' keywords of gran/hooke/history/kk")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
-    MODES["gran_kk_gpu"] = (*MODES["gran_kk_gpu"][:2],
-                            GPU + ["-pk", "kokkos"] + args.gran_package.split())
+    MODES["gran_kk_gpu"] = gran_mode(args.gran_package)
 
     rows = []
     for n in args.sizes:

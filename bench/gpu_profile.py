@@ -26,12 +26,12 @@ import shutil
 import subprocess
 from collections import defaultdict
 
+from gpu import GRAN_PACKAGE, MODES, gran_mode
+
 HERE = os.path.dirname(os.path.abspath(__file__))
-GPU = ["-k", "on", "g", "1", "-sf", "kk"]
 RUNS = {  # name: style and geometry of in.bench, extra command-line arguments
-    "mca": ("mca", "cube", GPU),
-    "gran_hooke": ("gran_hooke", "periodic", GPU + ["-pk", "kokkos", "neigh", "half",
-                                                    "newton", "on"]),
+    "mca": MODES["kk_gpu"],
+    "gran_hooke": gran_mode(),
 }
 METRICS = {  # column: ncu metric
     "time": "gpu__time_duration.sum",
@@ -136,14 +136,14 @@ def main():
     ap.add_argument("--skip", type=int, default=600, help="kernel launches not profiled")
     ap.add_argument("--count", type=int, default=40, help="kernel launches profiled")
     ap.add_argument("--runs", nargs="+", choices=list(RUNS), default=list(RUNS))
-    ap.add_argument("--gran-package", default=" ".join(RUNS["gran_hooke"][2][len(GPU) + 2:]),
+    ap.add_argument("--gran-package", default=GRAN_PACKAGE,
                     help="the '-pk kokkos' keywords of gran/hooke/history/kk")
     ap.add_argument("--lmp", default="lmp")
     ap.add_argument("--ncu", default=shutil.which("ncu") or "ncu")
     ap.add_argument("--out", default=os.path.join(HERE, "results"))
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
-    RUNS["gran_hooke"] = (*RUNS["gran_hooke"][:2], GPU + ["-pk", "kokkos"] + args.gran_package.split())
+    RUNS["gran_hooke"] = gran_mode(args.gran_package)
     rows = []
     for run in args.runs:
         try:
