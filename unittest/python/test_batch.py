@@ -11,8 +11,9 @@ What is asserted:
 * a job of MPI ranks and a job of MPI ranks x Kokkos threads give the final
   state of the same mpirun command run directly, bit for bit (same
   executable, same ranks and threads: the same arithmetic);
-* a chained run whose first job is cancelled mid-way, and one whose jobs
-  stop at their time limit, finish from their restart files with the final
+* a chained run whose first job is cancelled mid-way, one whose jobs
+  stop at their time limit, and one whose newest restart file a kill cut
+  short, finish from their restart files with the final
   state of an uninterrupted run to 1e-5 of the wave's amplitudes (a run
   continued from a restart file recomputes the forces of its first step
   from the stored link history with other round-off: test_pair_mca's
@@ -201,10 +202,18 @@ def queue(env):
 
 
 @pytest.fixture(scope="module")
-def uninterrupted(slurm, tmp_path_factory):
-    """The chain's run in one piece (mpirun -np 2, no Slurm)."""
+def uninterrupted_dir(slurm, tmp_path_factory):
+    """The chain's run in one piece (mpirun -np 2, no Slurm): its directory,
+    with its restart files of every 250 steps."""
     d = tmp_path_factory.mktemp("whole")
-    return direct(slurm, d, ["mpirun", "-np", "2"], current().lmp, ["-in", "in.batch"] + CHAIN)
+    direct(slurm, d, ["mpirun", "-np", "2"], current().lmp, ["-in", "in.batch"] + CHAIN)
+    return d
+
+
+@pytest.fixture(scope="module")
+def uninterrupted(uninterrupted_dir):
+    """The final state of the uninterrupted run."""
+    return read_dump(uninterrupted_dir / "final.dump")[-1]
 
 
 def assert_same_final_state(d, ref):
@@ -250,6 +259,47 @@ def test_chain_cancelled_midway_finishes_from_its_restart_file(slurm, tmp_path, 
     step = int(re.search(r"-var restart batch\.(\d+)\.restart", second).group(1))
     assert 500 <= step < 2932 and step % 250 == 0
     assert "ended before its segment did (cancelled or killed)" in second
+    assert_same_final_state(d, uninterrupted)
+    wait_for(lambda: queue(slurm) == "", 60, "an empty queue")
+
+
+def test_chain_continues_past_a_restart_file_cut_short(slurm, tmp_path, uninterrupted_dir,
+                                                       uninterrupted):
+    """A job killed while LAMMPS wrote its newest restart file leaves that
+    file cut short (a cancel of the test above once landed there, and the
+    successor stopped with "Invalid LAMMPS restart file").  The state of
+    such a chain, made here: the run's files of steps 250, 500 and 750,
+    the last cut to half its length, and a chain.state of a job that ended
+    while running.  The successor sets the cut file aside, continues from
+    step 500 and finishes with the uninterrupted run's final state.  With
+    the cut file alone (nothing reads) it continues from it and fails with
+    LAMMPS's message, as for any unreadable file."""
+    data = (uninterrupted_dir / "batch.750.restart").read_bytes()
+    running = "link=1\nstatus=running\njob=1\nlog=log.chain.1\n"
+
+    alone = job_dir(tmp_path, "alone")
+    (alone / "batch.750.restart").write_bytes(data[:len(data) // 2])
+    (alone / "chain.state").write_text(running)
+    rc, _, out = sbatch(slurm, alone, ["--ntasks=2", "chain.sbatch", "continue"] + CHAIN)
+    assert rc != 0 and re.search(r"link 2 failed \(exit status \d+\): ERROR", out), out[-3000:]
+    assert "-var restart batch.750.restart" in out and "set aside" not in out, out[-3000:]
+    assert chain_state(alone)["status"] == "failed"
+    wait_for(lambda: queue(slurm) == "", 60, "the successor to be cancelled")
+
+    d = job_dir(tmp_path, "chain")
+    for step in (250, 500):
+        shutil.copy(uninterrupted_dir / f"batch.{step}.restart", d)
+    (d / "batch.750.restart").write_bytes(data[:len(data) // 2])
+    (d / "chain.state").write_text(running)
+    rc, _, out = sbatch(slurm, d, ["--ntasks=2", "chain.sbatch", "continue"] + CHAIN)
+    assert rc == 0, out[-3000:]
+    assert ("batch.750.restart does not read (written when the job was killed?): set aside as "
+            "batch.750.restart.incomplete") in out, out[-3000:]
+    assert "-var restart batch.500.restart" in out, out[-3000:]
+    assert (d / "batch.750.restart.incomplete").stat().st_size == len(data) // 2
+    assert not (d / "chain.probe.in").exists()
+    wait_for(lambda: chain_state(d).get("status") in ("done", "failed"), 60, "the chain to end")
+    assert chain_state(d)["status"] == "done"
     assert_same_final_state(d, uninterrupted)
     wait_for(lambda: queue(slurm) == "", 60, "an empty queue")
 
