@@ -64,6 +64,13 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
   MCAKokkos::double_2d<DeviceType> psum;    // (atomic add and max)
   MCAKokkos::double_1d<DeviceType> bond_measure;
   int particle, particle_now;
+  // melting (tag bound with it): the step and its length; the entries n
+  // of the bonds that froze again (their new references in records)
+  int melt_now;
+  double dt;
+  long long step;
+  MCAKokkos::int_1d<DeviceType> frozen;
+  Kokkos::View<int, DeviceType> nfrozen;
   int nlocal, newton_bond;
   int damp_now;    // damping in dynamics only
   int eflag_global, eflag_atom, vflag_global, vflag_atom;
@@ -123,6 +130,23 @@ template <class DeviceType, int DIM> struct BeamForceKernel {
     if (out.measure >= 1.0 && !c.particle) {
       report_broken(n);
       return;
+    }
+    if (melt_now && c.melt) {
+      const int fate = melt_fate(c, DIM, out.energy, ref[REF_L0], d, dt, step, (long long) tag(i),
+                                 (long long) tag(j));
+      if (fate == FATE_BREAK) {
+        report_broken(n);
+        return;
+      }
+      if (fate == FATE_REFREEZE) {
+        // stress-free from now on: no loads at this step (BondBeam::evaluate)
+        double fresh[NVALUES];
+        fresh_reference(DIM, d, qi, qj, fresh);
+        for (int k = 0; k < NVALUES; k++) records(n, BondBeam::REC_REF + k) = fresh[k];
+        const int m = Kokkos::atomic_fetch_add(&nfrozen(), 1);
+        if (m < (int) frozen.extent(0)) frozen(m) = n;
+        return;
+      }
     }
     const bool own_i = newton_bond || i < nlocal, own_j = newton_bond || j < nlocal;
     if (particle) {
@@ -219,7 +243,7 @@ template <class Style> void mark_kokkosable(Style *, long) {}
 template <class DeviceType>
 BondBeamKokkos<DeviceType>::BondBeamKokkos(LAMMPS *lmp) :
     MCAKokkos::RequiresKokkos(lmp, "Bond style beam/kk"), BondBeam(lmp), avecKK(nullptr),
-    d_nbroken("bond:beam_nbroken")
+    d_nbroken("bond:beam_nbroken"), d_nfrozen("bond:beam_nfrozen")
 {
   mark_kokkosable(this, 0);
   atomKK = (AtomKokkos *) atom;
@@ -275,7 +299,7 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
   if (particle) particle_states_to_device(nall);
   atomKK->sync(execution_space,
                datamask_read | MCA_QUAT_MASK | (damping ? V_MASK | OMEGA_MASK : 0) |
-                   (radii ? RADIUS_MASK : 0) | (particle ? TAG_MASK : 0));
+                   (radii ? RADIUS_MASK : 0) | ((particle || melting) ? TAG_MASK : 0));
   atomKK->modified(execution_space, datamask_modify);
 
   if (domain->dimension == 3)
@@ -287,6 +311,8 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     find_candidates(nlist, neighborKK);
     particle_sums_to_host(nall);
   }
+
+  if (melt_now()) refrozen_to_host();
 
   // broken bonds leave the bond arrays on the host (on the device their
   // records say so until the list is built again); in the order of the
@@ -368,6 +394,34 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::particle_sums_to_ho
 }
 
 /* ----------------------------------------------------------------------
+   melting: the new reference states of the bonds that froze again (in
+   the device's records) to the fix's slots on the host, where the records
+   are made again when the bond list is built (on a GPU the records come
+   to the host at steps where a bond froze again)
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void BondBeamKokkos<DeviceType>::refrozen_to_host()
+{
+  int nfrozen = 0;
+  Kokkos::deep_copy(nfrozen, d_nfrozen);
+  if (!nfrozen) return;
+  auto entries = Kokkos::create_mirror_view(d_frozen);
+  Kokkos::deep_copy(entries, d_frozen);
+  k_records.template modify<DeviceType>();
+  k_records.sync_host();
+  auto records = k_records.view_host();
+  auto *neighborKK = static_cast<NeighborKokkos *>(neighbor);
+  neighborKK->k_bondlist.sync_host();
+  auto list = neighborKK->k_bondlist.view_host();
+  atomKK->sync(Host, TAG_MASK | BOND_MASK);
+  for (int k = 0; k < nfrozen; k++) {
+    const int n = entries(k);
+    fix_state->set_reference(list(n, 0), list(n, 1), force->newton_bond,
+                             &records(n, BondBeam::REC_REF));
+  }
+}
+
+/* ----------------------------------------------------------------------
    the force kernel over the bond list, for beams of dimension DIM
 ------------------------------------------------------------------------- */
 
@@ -385,12 +439,22 @@ void BondBeamKokkos<DeviceType>::launch(int nlist, NeighborKokkos *neighborKK)
   if (radii) kernel.radius = atomKK->k_radius.template view<DeviceType>();
   kernel.particle = particle;
   kernel.particle_now = particle_now();
+  kernel.melt_now = melt_now();
+  if (kernel.melt_now) {
+    kernel.dt = update->dt;
+    kernel.step = update->ntimestep;
+    if ((int) d_frozen.extent(0) < nlist)
+      d_frozen = MCAKokkos::int_1d<DeviceType>("bond:beam_frozen", nlist);
+    Kokkos::deep_copy(d_nfrozen, 0);
+    kernel.frozen = d_frozen;
+    kernel.nfrozen = d_nfrozen;
+  }
+  if (particle || kernel.melt_now) kernel.tag = atomKK->k_tag.template view<DeviceType>();
   if (particle) {
     if ((int) d_bond_measure.extent(0) < nlist)
       d_bond_measure =
           MCAKokkos::double_1d<DeviceType>("bond:beam_measure", nlist + nlist / 4 + 16);
     Kokkos::deep_copy(d_bond_measure, -2.0);    // (no candidate unless set)
-    kernel.tag = atomKK->k_tag.template view<DeviceType>();
     kernel.pstate = d_pstate;
     kernel.psum = d_psum;
     kernel.bond_measure = d_bond_measure;

@@ -58,6 +58,10 @@ class BondBeamKokkos : private MCAKokkos::RequiresKokkos, public BondBeam {
   // of local and ghost atoms) and each listed bond's measure on the device
   MCAKokkos::double_2d<DeviceType> d_pstate, d_psum;
   MCAKokkos::double_1d<DeviceType> d_bond_measure;
+  // melting: the list entries of the bonds that froze again at this step
+  MCAKokkos::int_1d<DeviceType> d_frozen;
+  Kokkos::View<int, DeviceType> d_nfrozen;
+  void refrozen_to_host();
   template <int DIM> void launch(int nlist, class NeighborKokkos *neighborKK);
   void particle_states_to_device(int nall);
   void find_candidates(int nlist, class NeighborKokkos *neighborKK);

@@ -79,6 +79,9 @@ namespace BeamKernels {
 
   enum BeamScatter { SCATTER_NONE = 0, SCATTER_UNIFORM = 1, SCATTER_WEIBULL = 2 };
 
+  // stochastic melting (keyword melt): a constant rate, or Glen's law
+  enum BeamMelt { MELT_NONE = 0, MELT_RATE = 1, MELT_GLEN = 2 };
+
   // the end moments of a bond: the Euler-Bernoulli beam, or the shear
   // beam of NUMFRAC's ice lattices (digest A.4): a normal spring k_n and a
   // rotational spring k_r at each end, M_i = k_r q_i, M_j = k_r q_j
@@ -111,6 +114,10 @@ namespace BeamKernels {
     int fibre_rim;           // 1: the outer fibre at the rim of that section
     double lambda;           // its radius over the smaller particle radius
     int particle;            // 1: broken by its particles' averaged stress (particle_measure)
+    int melt;                // BeamMelt: stochastic melting (melts)
+    double melt_value;       // MELT_RATE: the rate lambda; MELT_GLEN: Glen's factor A
+    int melt_seed;
+    double capture;    // refreeze: a melted bond this short re-forms stress-free (0: breaks)
   };
 
   // the reference state of a bond, in the order lower atom ID first.
@@ -263,6 +270,17 @@ namespace BeamKernels {
     to_body(qi, z, ref + REF_ZI);
     to_body(qj, y, ref + REF_YJ);
     to_body(qj, z, ref + REF_ZJ);
+  }
+
+  // a stress-free reference state of either dimension (d = x_j - x_i, i
+  // the lower atom ID): a new bond, or a melted one that freezes again
+  MCA_INLINE void fresh_reference(const int dimension, const double *d, const double *qi,
+                                  const double *qj, double *ref)
+  {
+    if (dimension == 3)
+      reference_state_3d(d, qi, qj, ref);
+    else
+      reference_state(d[0], d[1], planar_angle(qi[0], qi[3]), planar_angle(qj[0], qj[3]), ref);
   }
 
   // the bending stiffness of a bond of reference length L0 in one plane
@@ -690,25 +708,88 @@ namespace BeamKernels {
     return newton_bond ? 1.0 : 0.5 * ((i < nlocal) + (j < nlocal));
   }
 
-  // the strength factor of the bond between atoms tag_lo < tag_hi: a
-  // function of the two IDs and the seed (the same on every rank, in every
-  // restart), uniform in [1 - w, 1 + w] or Weibull of modulus m with mean 1
+  // the random numbers of a bond: hashes of a seed and the two atom IDs
+  // (and of the step), the same on every rank and in every restart, with
+  // no state kept: splitmix64's finaliser over a combination of the words
+  MCA_INLINE unsigned long long mix64(unsigned long long z)
+  {
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+
+  MCA_INLINE unsigned long long bond_hash(const int seed, const long long tag_lo,
+                                          const long long tag_hi)
+  {
+    unsigned long long z = (unsigned long long) seed * 0x9E3779B97F4A7C15ULL;
+    z ^= (unsigned long long) tag_lo + 0x632BE59BD9B4E019ULL + (z << 6) + (z >> 2);
+    z ^= (unsigned long long) tag_hi + 0x85157AF5ULL + (z << 6) + (z >> 2);
+    return mix64(z);
+  }
+
+  // (0, 1): the middle of one of 2^53 bins (u = 0 would give a Weibull strength 0)
+  MCA_INLINE double open_unit(const unsigned long long z)
+  {
+    return ((double) (z >> 11) + 0.5) * (1.0 / 9007199254740992.0);
+  }
+
+  // the strength factor of the bond between atoms tag_lo < tag_hi, drawn
+  // from the two IDs and the seed: uniform in [1 - w, 1 + w] or Weibull of
+  // modulus m with mean 1
   MCA_INLINE double strength_factor(const BeamCoeff &c, const long long tag_lo,
                                     const long long tag_hi)
   {
     if (c.scatter == SCATTER_NONE) return 1.0;
-    // splitmix64 of the seed and the two IDs
-    unsigned long long z = (unsigned long long) c.seed * 0x9E3779B97F4A7C15ULL;
-    z ^= (unsigned long long) tag_lo + 0x632BE59BD9B4E019ULL + (z << 6) + (z >> 2);
-    z ^= (unsigned long long) tag_hi + 0x85157AF5ULL + (z << 6) + (z >> 2);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    // (0, 1): the middle of one of 2^53 bins (u = 0 would give a Weibull strength 0)
-    const double u = ((double) (z >> 11) + 0.5) * (1.0 / 9007199254740992.0);
+    const double u = open_unit(bond_hash(c.seed, tag_lo, tag_hi));
     if (c.scatter == SCATTER_UNIFORM) return 1.0 + c.scatter_width * (2.0 * u - 1.0);
     const double m = c.scatter_width;
     return pow(-log(1.0 - u), 1.0 / m) / tgamma(1.0 + 1.0 / m);
+  }
+
+  /* --------------------------------------------------------------------
+     stochastic melting and re-freezing (keywords melt, refreeze; digest
+     A.8 and R4): a bond melts during a step dt with probability
+       P = 1 - exp(-lambda dt),
+     independently of its other steps and of the other bonds; lambda is a
+     constant rate, or Glen's law of ice (n = 3),
+       lambda = 2 A E^2 U / L0^d,
+     U the bond's elastic energy (2-D: per unit thickness), L0 its
+     reference length for the particle diameter a, d the dimension: a
+     melted beam relaxes the strain sigma / E of its stress, which gives
+     the flow rate D = lambda t^D / E = A sigma_e^2 t^D (U = sigma^2 a^d
+     / 2E).  A melted bond freezes again at once, stress-free in its
+     present geometry, if it is no longer than the capture distance;
+     otherwise (or without refreeze) it is broken.  The draw is a hash of
+     the seed, the two atom IDs and the step
+  -------------------------------------------------------------------- */
+
+  MCA_INLINE double melt_rate(const BeamCoeff &c, const int dimension, const double energy,
+                              const double L0)
+  {
+    if (c.melt == MELT_RATE) return c.melt_value;
+    const double a = (dimension == 3) ? L0 * L0 * L0 : L0 * L0;
+    return 2.0 * c.melt_value * c.E * c.E * energy / a;
+  }
+
+  MCA_INLINE bool melts(const BeamCoeff &c, const int dimension, const double energy,
+                        const double L0, const double dt, const long long step,
+                        const long long tag_lo, const long long tag_hi)
+  {
+    const double p = -expm1(-melt_rate(c, dimension, energy, L0) * dt);
+    unsigned long long z = bond_hash(c.melt_seed, tag_lo, tag_hi);
+    z ^= (unsigned long long) step + 0x2545F4914F6CDD1DULL + (z << 6) + (z >> 2);
+    return open_unit(mix64(z)) < p;
+  }
+
+  // what melting does to a bond of a melting type at this evaluation
+  enum BeamFate { FATE_KEEP = 0, FATE_BREAK = 1, FATE_REFREEZE = 2 };
+
+  MCA_INLINE int melt_fate(const BeamCoeff &c, const int dimension, const double energy,
+                           const double L0, const double *d, const double dt, const long long step,
+                           const long long tag_lo, const long long tag_hi)
+  {
+    if (!melts(c, dimension, energy, L0, dt, step, tag_lo, tag_hi)) return FATE_KEEP;
+    return (c.capture > 0.0 && dot3(d, d) <= c.capture * c.capture) ? FATE_REFREEZE : FATE_BREAK;
   }
 
 }    // namespace BeamKernels

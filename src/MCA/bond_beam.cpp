@@ -101,9 +101,10 @@ void BondBeam::find_state()
                           [break sigma0 tau0] [bending c]
                           [mohr phi] [scatter uniform w seed | weibull m seed]
                           [criterion bond | particle]
+                          [melt rate lambda seed | glen A seed] [refreeze capture]
    bond_coeff N E radii lambda [the same keywords but section; bending c | rim]
    bond_coeff N shearbeam kn kr [twist kt] [damp beta] [break N0 V0] [mohr phi] [scatter ...]
-                                [criterion ...]
+                                [criterion ...] [melt rate lambda seed] [refreeze capture]
    (3-D: a beam needs G, from shear or poisson; a shear beam needs twist)
 ------------------------------------------------------------------------- */
 
@@ -278,12 +279,37 @@ void BondBeam::coeff(int narg, char **arg)
                    kind);
       criterion = true;
       iarg += 2;
+    } else if (word == "melt") {
+      need(3, "melt (rate lambda seed | glen A seed)");
+      const std::string kind = arg[iarg + 1];
+      const double value = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (kind == "rate") {
+        if (value <= 0.0)
+          error->all(FLERR, "Bond_coeff beam: melt rate lambda = {} must be > 0", value);
+        c.melt = MELT_RATE;
+      } else if (kind == "glen") {
+        only_beam("melt glen (Glen's law needs the beam's E)");
+        if (value <= 0.0) error->all(FLERR, "Bond_coeff beam: melt glen A = {} must be > 0", value);
+        c.melt = MELT_GLEN;
+      } else
+        error->all(FLERR, "Bond_coeff beam: melt {} is unknown (allowed: rate, glen)", kind);
+      c.melt_value = value;
+      c.melt_seed = utils::inumeric(FLERR, arg[iarg + 3], false, lmp);
+      if (c.melt_seed <= 0)
+        error->all(FLERR, "Bond_coeff beam: melt seed = {} must be > 0", c.melt_seed);
+      iarg += 4;
+    } else if (word == "refreeze") {
+      need(1, "refreeze (capture distance)");
+      c.capture = positive("refreeze capture distance", arg[iarg + 1]);
+      iarg += 2;
     } else
       error->all(FLERR,
                  "Bond_coeff beam: unknown keyword '{}' (allowed: shear, poisson, section, twist, "
-                 "damp, break, bending, mohr, scatter, criterion)",
+                 "damp, break, bending, mohr, scatter, criterion, melt, refreeze)",
                  word);
   }
+  if (c.capture > 0.0 && !c.melt)
+    error->all(FLERR, "Bond_coeff beam: refreeze needs the melt keyword");
   if (!c.breakable && (bending || mohr || c.scatter || criterion))
     error->all(FLERR,
                "Bond_coeff beam: bending, mohr, scatter and criterion need the break keyword");
@@ -322,9 +348,11 @@ void BondBeam::init_style()
 
   estimate_longest_bond();
 
-  breaking = damping = radii = particle = 0;
+  breaking = damping = radii = particle = melting = 0;
   for (int i = 1; i <= atom->nbondtypes; i++) {
     if (coeffs[i].breakable) breaking = 1;
+    // (a melted bond that does not freeze again is broken)
+    if (coeffs[i].melt) breaking = melting = 1;
     if (coeffs[i].beta > 0.0) damping = 1;
     if (coeffs[i].radii) radii = 1;
     if (coeffs[i].particle) particle = 1;
@@ -338,6 +366,10 @@ void BondBeam::init_style()
     error->all(FLERR,
                "Bond style beam with damp does not support run_style respa (its energy tally "
                "counts one bond evaluation per step)");
+  if (melting && utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR,
+               "Bond style beam with melt does not support run_style respa (a bond melts with "
+               "its probability once per step, at one bond evaluation)");
   // a broken bond leaves the bond arrays; with a pair style, either the
   // pair style acts between bonded particles as between any others
   // (special weights 1: BPM's overlay/pair yes) and nothing else changes,
@@ -479,6 +511,11 @@ bool BondBeam::particle_now() const
   return particle && !update->setupflag;
 }
 
+bool BondBeam::melt_now() const
+{
+  return melting && update->whichflag == 1 && !update->setupflag;
+}
+
 /* ----------------------------------------------------------------------
    forces and torques of the listed bonds; those that break go to broken
 ------------------------------------------------------------------------- */
@@ -497,6 +534,9 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   // damping in dynamics only (a minimizer's forces are the energy's gradient)
   const bool damp_now = damping && update->whichflag == 1;
   const bool decisions = particle_now();
+  const bool melt_step = melt_now();
+  const double dt = update->dt;
+  const long long step = update->ntimestep;
   const tagint *tag = atom->tag;
   double dissipated = 0.0;
 
@@ -509,7 +549,7 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   for (int n = 0; n < nlist; n++) {
     const int type = bondlist[n][2];
     if (type <= 0) continue;
-    const double *rec = &records[n * nrec];
+    double *rec = &records[n * nrec];
     // the element in the order lower atom ID first (BeamKernels::beam_bond)
     const bool swap = rec[REC_SWAP] != 0.0;
     const int i = swap ? bondlist[n][1] : bondlist[n][0];
@@ -541,6 +581,20 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
     if (out.measure >= 1.0 && !c.particle) {
       drop(n);
       continue;
+    }
+    if (melt_step && c.melt) {
+      const int fate =
+          melt_fate(c, DIM, out.energy, rec[REC_REF + REF_L0], d, dt, step, tag[i], tag[j]);
+      if (fate == FATE_BREAK) {
+        drop(n);
+        continue;
+      }
+      if (fate == FATE_REFREEZE) {
+        // stress-free from now on: no loads at this step
+        fresh_reference(DIM, d, quat[i], quat[j], rec + REC_REF);
+        fix_state->set_reference(bondlist[n][0], bondlist[n][1], newton_bond, rec + REC_REF);
+        continue;
+      }
     }
     if (particle) {
       // each end's share of the bond's virial; a candidate of each end
@@ -734,7 +788,8 @@ double BondBeam::equilibrium_distance(int /*type*/)
 ------------------------------------------------------------------------- */
 
 static constexpr int RESTART_TAG = 0x6265616d;    // "beam"
-static constexpr int RESTART_VERSION = 4;    // 2: 3-D sections, damping; 3: radii; 4: criterion
+// 2: 3-D sections, damping; 3: radii; 4: criterion; 5: melt, refreeze
+static constexpr int RESTART_VERSION = 5;
 
 void BondBeam::write_restart(FILE *fp)
 {
@@ -792,6 +847,10 @@ void BondBeam::write_data(FILE *fp)
       line += fmt::format(" scatter {} {:.17g} {}",
                           c.scatter == SCATTER_UNIFORM ? "uniform" : "weibull", c.scatter_width,
                           c.seed);
+    if (c.melt)
+      line += fmt::format(" melt {} {:.17g} {}", c.melt == MELT_RATE ? "rate" : "glen",
+                          c.melt_value, c.melt_seed);
+    if (c.capture > 0.0) line += fmt::format(" refreeze {:.17g}", c.capture);
     fprintf(fp, "%s\n", line.c_str());
   }
 }

@@ -74,6 +74,11 @@ class BondBeam : public Bond {
   int breaking;
   // damping: any type with damp (reads v and omega; the power goes to BEAM_STATE's tally)
   int damping;
+  // melting: any type with melt (a bond melts with a probability per step;
+  // with refreeze it may freeze again, stress-free); melt_now: in dynamics,
+  // not at a run's setup (whose step was evaluated by the run before)
+  int melting;
+  bool melt_now() const;
   // radii: any type with its sections from the particles' radii (reads radius)
   int radii;
   // particle: any type broken by the particle criterion (the fix's sums

@@ -293,13 +293,8 @@ const double *FixBeamState::reference(int i1, int i2, int newton_bond)
   double **x = atom->x;
   double **quat = avec->quat;
   slot[SLOT_PARTNER] = static_cast<double>(tag[i2]);
-  if (domain->dimension == 3) {
-    const double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
-    reference_state_3d(d, quat[lo], quat[hi], slot + SLOT_REF);
-  } else
-    reference_state(x[hi][0] - x[lo][0], x[hi][1] - x[lo][1],
-                    planar_angle(quat[lo][0], quat[lo][3]), planar_angle(quat[hi][0], quat[hi][3]),
-                    slot + SLOT_REF);
+  const double d[3] = {x[hi][0] - x[lo][0], x[hi][1] - x[lo][1], x[hi][2] - x[lo][2]};
+  fresh_reference(domain->dimension, d, quat[lo], quat[hi], slot + SLOT_REF);
 
   // with newton_bond off the partner stores the bond too; its owner sets
   // a ghost partner's copy when it lists the bond, at the same step
@@ -312,6 +307,22 @@ const double *FixBeamState::reference(int i1, int i2, int newton_bond)
     }
   }
   return slot + SLOT_REF;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixBeamState::set_reference(int i1, int i2, int newton_bond, const double *ref)
+{
+  const tagint *tag = atom->tag;
+  const int nvalues = nslot - SLOT_REF;
+  double *slot = find_slot(i1, tag[i2]);
+  if (slot)
+    for (int k = 0; k < nvalues; k++) slot[SLOT_REF + k] = ref[k];
+  if (!newton_bond && i2 < atom->nlocal) {
+    double *mirror = find_slot(i2, tag[i1]);
+    if (mirror)
+      for (int k = 0; k < nvalues; k++) mirror[SLOT_REF + k] = ref[k];
+  }
 }
 
 /* ----------------------------------------------------------------------

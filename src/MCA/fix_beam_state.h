@@ -83,6 +83,11 @@ class FixBeamState : public Fix {
   // if atom i1 has no such bond
   const double *reference(int i1, int i2, int newton_bond);
 
+  // a new reference state of entry (i1, i2) of a bond list (a melted bond
+  // that froze again), in the order lower atom ID first: into atom i1's
+  // slot, and with newton_bond off into the partner's if it is local
+  void set_reference(int i1, int i2, int newton_bond, const double *ref);
+
   // the reference of a bond as stored by atom i (local), or nullptr
   const double *stored_reference(int i, int j) const;
 
