@@ -13,6 +13,8 @@ height 2R per unit thickness in 2-D (A = 2R, I = (2R)^3 / 12).
 * a periodic hexagonal lattice of touching particles (radius L/2) with
   radii lambda has the nu_2D of a rectangular section with h / L = lambda
   (digest case 7);
+* the same on 2 ranks and with newton_bond off, with bond damping of
+  moving particles (the ghosts' radii give the sections);
 * write_data and restart files keep radii and bending rim; the Kokkos
   variant equals the CPU style; bad input gives clear errors.
 """
@@ -78,13 +80,13 @@ def scene(dim):
     return sites, bonds, beam2d.DEFORM
 
 
-def header(dim, data):
-    return (beam3d.header(data) if dim == 3 else beam2d.header(data))
+def header(dim, data, newton="on"):
+    return (beam3d.header(data, newton=newton) if dim == 3 else beam2d.header(data, newton=newton))
 
 
-def coefficients(dim, bonds, radii, breaking, radii_words=True):
+def coefficients(dim, bonds, radii, breaking, radii_words=True, damp=False):
     """bond_coeff lines: radii lambda, or each bond's section written out."""
-    shear = f"shear {G_} {KS}"
+    shear = f"shear {G_} {KS}" + (" damp 0.02" if damp else "")
     strength = "break 8.0 30.0 bending {}" if breaking else ""
     if radii_words:
         return f"bond_coeff 1 {E_} radii {LAMBDA} {shear} {strength.format('rim')}\n"
@@ -98,13 +100,29 @@ def coefficients(dim, bonds, radii, breaking, radii_words=True):
     return "".join(lines)
 
 
-def deformed_state(build, directory, dim, radii_words, breaking=False, extra_args=()):
+# a velocity field for the bond damping (the particles' spins stay 0)
+MOVING = """
+variable        vx atom 0.2*sin(1.9*id)
+variable        vy atom 0.3*cos(0.8*id)
+variable        vz atom 0.1*sin(2.6*id+1)
+velocity        all set v_vx v_vy {vz}
+"""
+
+
+def deformed_state(build, directory, dim, radii_words, breaking=False, extra_args=(),
+                   nprocs=1, newton="on", damp=False):
     sites, bonds, deform = scene(dim)
     radii = radii_of(len(sites))
     data = data_file(directory / "scene.data", dim, np.asarray(sites), bonds, radii,
                      per_bond_types=not radii_words)
-    script = header(dim, data) + "bond_style beam\n" + \
-        coefficients(dim, bonds, radii, breaking, radii_words) + deform
+    script = header(dim, data, newton) + ("comm_modify vel yes\n" if damp else "") + \
+        "bond_style beam\n" + \
+        coefficients(dim, bonds, radii, breaking, radii_words, damp) + deform
+    if damp:
+        script += MOVING.format(vz="v_vz" if dim == 3 else "0.0")
+    if nprocs == 2:
+        # the ranks split the scene along x: bonds between owned and ghost atoms
+        script = script.replace("read_data", "processors 2 1 1\nread_data")
     names = ["fx", "fy", "tqz", "c_pe"] + (["fz", "tqx", "tqy"] if dim == 3 else [])
     names += [f"c_st[{k}]" for k in (1, 2, 4)]
     script += f"""
@@ -116,7 +134,7 @@ dump            d all custom 1 state.dump id {' '.join(names)}
 dump_modify     d format float %.17g
 run             0 post no
 """
-    build.run(script, directory, extra_args=extra_args)
+    build.run(script, directory, extra_args=extra_args, nprocs=nprocs)
     thermo = mcatest.read_thermo(directory / "log.lammps")
     return read_dump(directory / "state.dump")[0], thermo, names, len(bonds)
 
@@ -147,6 +165,30 @@ def test_bending_rim_breaks_the_written_out_bonds(build, tmp_path, dim):
           f"{nbonds - ref_left:.0f}); forces of the rest to {worst:.1e}")
     assert 0 < left < nbonds    # some break, not all: the rim decides
     assert left == ref_left and worst < 1e-13
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_radii_with_damping_on_ranks_and_newton(build, tmp_path, dim):
+    """Sections from the radii of ghost particles: the deformed scene with
+    breaking (bending rim) and bond damping on moving particles, on 2 ranks
+    (split across the scene), with newton_bond off and both: the same
+    bonds broken, forces, torques, per-atom energy and stress to 1e-13 of
+    their scale (the sums in another order); and the damping does act
+    (the forces differ from the undamped ones by more than 1e-3)."""
+    ref, ref_thermo, names, nbonds = deformed_state(build, tmp_path / "ref", dim, True, True,
+                                                    damp=True)
+    still, _, _, _ = deformed_state(build, tmp_path / "still", dim, True, True)
+    moved = max(np.abs(ref[c] - still[c]).max() / np.abs(still[c]).max()
+                for c in ("fx", "fy"))
+    assert moved > 1e-3
+    for nprocs, newton in ((2, "on"), (1, "off"), (2, "off")):
+        snap, thermo, _, _ = deformed_state(build, tmp_path / f"{nprocs}{newton}", dim, True,
+                                            True, nprocs=nprocs, newton=newton, damp=True)
+        worst = max(np.abs(snap[c] - ref[c]).max() / np.abs(ref[c]).max() for c in names)
+        print(f"{dim}-D, {nprocs} ranks, newton_bond {newton}: {nbonds - thermo['Bonds'][-1]:.0f}"
+              f" of {nbonds} broken, largest relative difference {worst:.1e} (damping changes "
+              f"the forces by {moved:.1e})")
+        assert thermo["Bonds"][-1] == ref_thermo["Bonds"][-1] and worst < 1e-13
 
 
 def test_touching_radii_give_the_lattice_of_h_over_l(build, tmp_path):
