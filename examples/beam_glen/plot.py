@@ -41,12 +41,13 @@ def power_law(x, y):
 
 
 def main(logs):
-    results = sorted(creep_rate(p) for p in logs)
+    # (tau, elastic strain, rate, log) by tau
+    results = sorted(creep_rate(p) + (p,) for p in logs)
     tau = np.array([r[0] for r in results])
     rate = np.array([r[2] for r in results])
     k, n = power_law(tau, rate)
     a, b = power_law(tau, rate / tau)
-    for t, elastic, r in results:
+    for t, elastic, r, _ in results:
         print(f"tau {t:.4g}: elastic strain {elastic:.6g}, steady creep rate {r:.4e}, "
               f"fluidity {r / t:.4e}")
     print(f"creep rate = {k:.4g} tau^{n:.3f} (Glen: n = 3); "
@@ -56,8 +57,8 @@ def main(logs):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
-    for path, (t, _, _) in zip(sorted(logs, key=lambda p: creep_rate(p)[0]), results):
-        _, elastic, time, strain = read(path)
+    for t, _, _, path in results:
+        _, _, time, strain = read(path)
         left.plot(time - time[0], strain, label=f"tau = {t:g}")
     left.set_xlabel("time since melting began")
     left.set_ylabel("shear strain")

@@ -34,6 +34,7 @@ step:
   keywords.
 """
 
+import importlib.util
 import math
 import re
 
@@ -41,6 +42,8 @@ import numpy as np
 import pytest
 
 import mcatest
+import test_bond_beam as beam2d
+import test_bond_beam_3d as beam3d
 from mcatest import read_dump
 from test_bond_beam import beam_data, expect_error, header
 
@@ -216,8 +219,6 @@ def frozen_scene(build, directory, dim, capture, extra_args=()):
     bond melts (P = 1 - exp(-1e3) = 1) and freezes again if not longer than
     `capture`, then run 0 without melting: (energy and forces before, after,
     bonds left, the deformed bond lengths)."""
-    import test_bond_beam as beam2d
-    import test_bond_beam_3d as beam3d
     mod = beam2d if dim == 2 else beam3d
     if dim == 2:
         sites, bonds = beam2d.hex_patch()
@@ -481,7 +482,6 @@ def test_glen_example_creeps_with_exponent_three(build, tmp_path):
     held and pulled rows), and its steady creep rate grows as tau^n with
     n within 0.3 of Glen's 3 (measured 2.92 here, 2.97 at full size: the
     events of a small layer are fewer)."""
-    import importlib.util
     spec = importlib.util.spec_from_file_location("glen_plot", EXAMPLE / "plot.py")
     plot = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(plot)
