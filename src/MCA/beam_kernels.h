@@ -733,6 +733,16 @@ namespace BeamKernels {
     return ((double) (z >> 11) + 0.5) * (1.0 / 9007199254740992.0);
   }
 
+  // a uniform number in (0, 1) for the pair tag_lo < tag_hi at a step (a
+  // bond's melting, a pair's freezing: fix beam/freeze)
+  MCA_INLINE double step_draw(const int seed, const long long tag_lo, const long long tag_hi,
+                              const long long step)
+  {
+    unsigned long long z = bond_hash(seed, tag_lo, tag_hi);
+    z ^= (unsigned long long) step + 0x2545F4914F6CDD1DULL + (z << 6) + (z >> 2);
+    return open_unit(mix64(z));
+  }
+
   // the strength factor of the bond between atoms tag_lo < tag_hi, drawn
   // from the two IDs and the seed: uniform in [1 - w, 1 + w] or Weibull of
   // modulus m with mean 1
@@ -776,9 +786,7 @@ namespace BeamKernels {
                         const long long tag_lo, const long long tag_hi)
   {
     const double p = -expm1(-melt_rate(c, dimension, energy, L0) * dt);
-    unsigned long long z = bond_hash(c.melt_seed, tag_lo, tag_hi);
-    z ^= (unsigned long long) step + 0x2545F4914F6CDD1DULL + (z << 6) + (z >> 2);
-    return open_unit(mix64(z)) < p;
+    return step_draw(c.melt_seed, tag_lo, tag_hi, step) < p;
   }
 
   // what melting does to a bond of a melting type at this evaluation

@@ -389,6 +389,13 @@ void BondBeam::init_style()
                "the pair style); found lj {} {} {} coul {} {} {}",
                lj[1], lj[2], lj[3], coul[1], coul[2], coul[3]);
   update_special = breaking && force->pair && excluded;
+  if (force->pair && excluded && comm->me == 0 &&
+      MCACompat::pair_list_keeps_special_pairs(neighbor, force->pair))
+    error->warning(FLERR,
+                   "Bond style beam: pair style {} of this LAMMPS version (before 2023) keeps "
+                   "bonded pairs in its neighbor list whatever the special_bonds weights (the "
+                   "size lists of granular styles): bonded particles touch through it too",
+                   force->pair_style);
 }
 
 /* ----------------------------------------------------------------------

@@ -361,6 +361,11 @@ void FixBeamState::remove_slot(int i, int m)
   memset(&state[i][last * nslot], 0, nslot * sizeof(double));
 }
 
+void FixBeamState::clear_slot(int i, int m)
+{
+  memset(&state[i][m * nslot], 0, nslot * sizeof(double));
+}
+
 /* ---------------------------------------------------------------------- */
 
 double FixBeamState::memory_usage()

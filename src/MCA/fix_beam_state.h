@@ -94,6 +94,10 @@ class FixBeamState : public Fix {
   // before bond m of local atom i is removed (num_bond[i] not yet lowered)
   void remove_slot(int i, int m);
 
+  // before a bond is added as bond m of local atom i (fix beam/freeze): an
+  // empty slot, so that the bond's reference is its geometry when listed
+  void clear_slot(int i, int m);
+
   // a bond style that has the orientations on another memory space
   class MCAAtomFields *avec;
 

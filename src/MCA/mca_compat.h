@@ -51,6 +51,7 @@ namespace LAMMPS_NS {
 
 class Fix;
 class Pair;
+class NeighList;
 
 // argument-checking helpers that newer LAMMPS versions provide in utils::
 namespace utils {
@@ -144,12 +145,15 @@ namespace MCACompat {
 #endif
   }
 
-  // an occasional full neighbor list for a fix (built on demand with build_one)
-  inline void request_full_occasional(Neighbor *neighbor, Fix *fix, int instance)
+  // an occasional full neighbor list for a fix (built on demand with
+  // build_one), with its own cutoff if cutoff > 0 (else the pair style's)
+  inline void request_full_occasional(Neighbor *neighbor, Fix *fix, int instance,
+                                      double cutoff = 0.0)
   {
 #ifdef MCA_HAVE_ADD_REQUEST
     (void) instance;
-    neighbor->add_request(fix, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+    auto request = neighbor->add_request(fix, NeighConst::REQ_FULL | NeighConst::REQ_OCCASIONAL);
+    if (cutoff > 0.0) request->set_cutoff(cutoff);
 #else
     const int irequest = neighbor->request(fix, instance);
     neighbor->requests[irequest]->pair = 0;
@@ -157,6 +161,45 @@ namespace MCACompat {
     neighbor->requests[irequest]->half = 0;
     neighbor->requests[irequest]->full = 1;
     neighbor->requests[irequest]->occasional = 1;
+    if (cutoff > 0.0) {
+      neighbor->requests[irequest]->cut = 1;
+      neighbor->requests[irequest]->cutoff = cutoff;
+    }
+#endif
+  }
+
+  // build an occasional list now unless it was built since the last
+  // neighbor list build; before LAMMPS 2022 build_one() takes a flag that
+  // tells a list built earlier in this step, before a build, from one
+  // built after it (as fix bond/create does)
+  template <class N>
+  inline auto build_occasional_impl(N *neighbor, NeighList *list, int)
+      -> decltype(neighbor->build_one(list, 1), void())
+  {
+    neighbor->build_one(list, 1);
+  }
+  template <class N> inline void build_occasional_impl(N *neighbor, NeighList *list, long)
+  {
+    neighbor->build_one(list);
+  }
+  inline void build_occasional(Neighbor *neighbor, NeighList *list)
+  {
+    build_occasional_impl(neighbor, list, 0);
+  }
+
+  // whether the neighbor list of a pair style holds bonded pairs whatever
+  // the special weights: the size lists of granular pair styles before the
+  // NPair rewrite of 2023 (checked during init, after the pair style's)
+  inline bool pair_list_keeps_special_pairs(Neighbor *neighbor, Pair *pair)
+  {
+#ifdef MCA_HAVE_SIZE_LIST_SPECIALS
+    (void) neighbor;
+    (void) pair;
+    return false;
+#else
+    for (int i = 0; i < neighbor->nrequest; i++)
+      if (neighbor->requests[i]->requestor == pair && neighbor->requests[i]->size) return true;
+    return false;
 #endif
   }
 

@@ -188,3 +188,36 @@ run             0
     assert bad.returncode != 0 and re.search(r"found lj 0 0.5 1 coul 0 0 0",
                                              bad.stdout + bad.stderr)
 
+
+
+def test_granular_lists_that_keep_bonded_pairs_are_reported(build, tmp_path):
+    """Two bonded discs of diameter 1 at distance 0.9 (the bond stress-free
+    there) with gran/hooke contacts (k_n = 30) and special_bonds lj 0 1 1:
+    where the pair style's neighbor list leaves the bonded pair out (LAMMPS
+    2023 and later) the force is exactly 0; LAMMPS 2021 builds the size
+    lists of granular styles without the special pairs, so the discs also
+    push each other apart by k_n (1 - 0.9) = 3, and the bond style says so
+    in a warning.  Either way the warning appears exactly when the contact
+    acts."""
+    data = beam2d.beam_data(tmp_path / "pair.data", [(-0.45, 0.0), (0.45, 0.0)], [(1, 0)],
+                            ((-3, 3), (-3, 3)), radius=1.0)
+    script = beam2d.header(data).replace("comm_modify     cutoff 2.5",
+                                         "comm_modify     cutoff 2.5 vel yes") + f"""
+special_bonds   lj/coul 0 1 1
+pair_style      gran/hooke 30.0 NULL 0.0 NULL 0.0 0
+pair_coeff      * *
+bond_style      beam
+bond_coeff      1 {E_} {A_} {I_} break {SIGMA0} {TAU0}
+dump            d all custom 1 pair.dump id fx fy
+dump_modify     d format float %.17g sort id
+run             0
+"""
+    build.run(script, tmp_path)
+    force = read_dump(tmp_path / "pair.dump")[0]["fx"]
+    warned = "keeps bonded pairs in its neighbor list" in (tmp_path / "log.lammps").read_text()
+    print(f"{build.name}: force on the discs {force}, warning {warned}")
+    assert force[0] == -force[1]
+    if warned:
+        assert force[0] == pytest.approx(-3.0, rel=1e-12)
+    else:
+        assert force[0] == 0.0

@@ -43,6 +43,9 @@ mca_probe(MCA_HAVE_TYPE_LABELS       label_map.h "find_label\\(int, int\\)")
 mca_probe(MCA_HAVE_ERROR_ALL_IARG     error.h    "void all\\(const std::string &, int, int, const std::string &\\)")
 mca_probe(MCA_HAVE_EAM_VIRTUAL_BASE  MANYBODY/pair_eam_fs.h "class PairEAMFS : virtual public PairEAM")
 mca_probe(MCA_HAVE_EXTRACT_PERATOM   pair.h     "virtual void \\*extract_peratom\\(")
+# the neighbor lists of finite-size (granular) pair styles leave special
+# pairs out since the NPair rewrite of 2023 (npair_bin.h), not before
+mca_probe(MCA_HAVE_SIZE_LIST_SPECIALS npair_bin.h "half/size/bin/newton")
 if(PKG_KOKKOS)
   mca_probe(MCA_HAVE_KK_FLOAT         KOKKOS/kokkos_type.h "KK_FLOAT")
   mca_probe(MCA_HAVE_KK_AVEC_VIRTUAL  KOKKOS/atom_vec_kokkos.h "class AtomVecKokkos : virtual public AtomVec")
