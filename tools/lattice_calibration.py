@@ -40,7 +40,7 @@ Command line (prints the parameters and the moduli they give back):
   tools/lattice_calibration.py mlp  --E2 E --nu2 NU [--c 1] [--n 6]
                                     [--potential harmonic|morse|lj] [--D0 1]
                                     [--moduli waves|static]
-  tools/lattice_calibration.py beam --E2 E --nu2 NU [--c 1] [--E-bond E]
+  tools/lattice_calibration.py beam --E2 E --nu2 NU [--c 1] [--E-bond E [--glen A]]
   (--E E --nu NU --thickness T --plane strain|stress instead of --E2 --nu2)
 
 From Python: import lattice_calibration as lc; lc.mlp_springs(E2, nu2) ...
@@ -193,6 +193,34 @@ def shear_beam_kr(ks, length):
     return 0.5 * ks * length * length
 
 
+def glen_creep_prefactor(kn, ks, e, a_glen):
+    """k of the initial shear creep rate k tau^3 (engineering shear strain
+    per time, tau the shear stress) of the hexagonal beam lattice whose
+    bonds melt by Glen's law (bond_coeff ... melt glen A; E the beams' E)
+    and freeze again at once, stress-free (doc/src/Howto_mlp.rst, "Viscous
+    flow").
+
+    Levin's theorem: at a fixed load, a bond that freezes again stress-free
+    adds the macroscopic strain whose work is twice its elastic energy,
+    V tau d(gamma) = 2 U_b, so the lattice creeps at
+    V tau gamma' = sum_b lambda_b 2 U_b = (4 A E^2 / L^2) sum_b U_b^2.
+    Under a uniform shear stress (tensor strain e = tau / 2 mu) a bond at
+    the angle theta to the shear direction has
+    U_b = L^2 e^2 (k_n sin^2 2theta + k_s cos^2 2theta) / 2; over the three
+    directions, per area sqrt3 L^2 / 2:
+    gamma' = 2 A E^2 S tau^3 / (sqrt3 (2 mu)^4), S = k_s^2 + 2 (3 k_n / 4 + k_s / 4)^2,
+    independent of L.  It holds until the frozen bonds' rest states, no
+    longer compatible, add residual stresses (the steady rate is higher)."""
+    for name, value in (("k_n", kn), ("E", e), ("A", a_glen)):
+        if value <= 0.0:
+            raise CalibrationError(f"{name} = {value:g} must be > 0")
+    if ks < 0.0:
+        raise CalibrationError(f"k_s = {ks:g} must be >= 0")
+    mu = SQRT3 / 4.0 * (kn + ks)
+    s = ks * ks + 2.0 * (0.75 * kn + 0.25 * ks) ** 2
+    return 2.0 * a_glen * e * e * s / (SQRT3 * (2.0 * mu) ** 4)
+
+
 # --------------------------------------------------------------------------
 # command line
 
@@ -219,6 +247,9 @@ def main(argv=None):
                     "waves (Eq. 11), or of a homogeneous strain's stress (a body loaded by forces)")
     ap.add_argument("--E-bond", type=float, default=None,
                     help="beam: the beam material's E (gives A and I of the section)")
+    ap.add_argument("--glen", type=float, default=None, metavar="A",
+                    help="beam, with --E-bond: the initial shear creep rate k tau^3 of the "
+                    "lattice whose bonds melt with melt glen A and freeze again")
     args = ap.parse_args(argv)
     try:
         if args.E2 is not None and args.nu2 is not None:
@@ -250,6 +281,12 @@ def main(argv=None):
                 # EA / c = k_n, 12 EI / c^3 = k_s
                 lines.append(f"beam of E {args.E_bond:g}: A {kn * args.c / args.E_bond:.10g}, "
                              f"I {ks * args.c ** 3 / (12.0 * args.E_bond):.10g}")
+            if args.glen is not None:
+                if not args.E_bond:
+                    raise CalibrationError("--glen needs --E-bond (Glen's rate has the beams' E)")
+                k = glen_creep_prefactor(kn, ks, args.E_bond, args.glen)
+                lines.append(f"melt glen {args.glen:g}: initial shear creep rate {k:.10g} tau^3 "
+                             f"({k / args.glen:.6g} A)")
             print(_report(lines, beam_moduli(kn, ks)))
     except CalibrationError as err:
         print(f"lattice_calibration: {err}", file=sys.stderr)

@@ -7,6 +7,7 @@ n = 3); glen.png and the figures printed."""
 
 import glob
 import math
+import os
 import re
 import sys
 
@@ -34,6 +35,28 @@ def creep_rate(path):
     return tau, elastic, slope
 
 
+def initial_rate(path, span=200.0):
+    """The slope of the strain over the first `span` time units of creep
+    (before the frozen bonds' residual stresses build up)."""
+    _, _, time, strain = read(path)
+    early = time <= time[0] + span
+    return np.polyfit(time[early], strain[early], 1)[0]
+
+
+def levin_prefactor(glen=3.0e-4, e=100.0, h_over_l=0.3):
+    """The initial creep rate per tau^3 of the periodic lattice
+    (tools/lattice_calibration.py glen_creep_prefactor: Levin's theorem),
+    or None where the tool is not next to the example."""
+    tools = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools")
+    sys.path.insert(0, tools)
+    try:
+        import lattice_calibration as lc
+    except ImportError:
+        return None
+    kn, ks = lc.beam_stiffness(e, h_over_l, h_over_l ** 3 / 12.0, 1.0)
+    return lc.glen_creep_prefactor(kn, ks, e, glen)
+
+
 def power_law(x, y):
     """(prefactor, exponent) of y = p x^e, least squares in log-log."""
     e, logp = np.polyfit(np.log(x), np.log(y), 1)
@@ -52,6 +75,13 @@ def main(logs):
               f"fluidity {r / t:.4e}")
     print(f"creep rate = {k:.4g} tau^{n:.3f} (Glen: n = 3); "
           f"fluidity = {a:.4g} tau^{b:.3f} (digest case 16: b = 2.0)")
+    levin = levin_prefactor()
+    if levin is not None:
+        for t, _, r, path in results:
+            start = initial_rate(path)
+            print(f"tau {t:.4g}: initial rate (first 200 time units) {start:.4e}, steady "
+                  f"{r:.4e}; Levin's {levin:.5g} tau^3 = {levin * t ** 3:.4e} (initial / Levin "
+                  f"{start / (levin * t ** 3):.3f}, steady / Levin {r / (levin * t ** 3):.3f})")
 
     import matplotlib
     matplotlib.use("Agg")

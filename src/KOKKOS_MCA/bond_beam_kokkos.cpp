@@ -334,8 +334,8 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
       }
       atomKK->sync(Host, TAG_MASK | BOND_MASK);
     }
-    // (another rank's broken bonds can change the special lists here)
-    if (update_special) atomKK->sync(Host, TAG_MASK | SPECIAL_MASK);
+    // (another rank's broken bonds can change the special lists here:
+    // specials_to_host() at the steps where some rank broke a bond)
     const bool specials_changed = remove_broken(nbroken, pairs.data());
     if (nbroken) atomKK->modified(Host, BOND_MASK);
     if (specials_changed) atomKK->modified(Host, SPECIAL_MASK);
@@ -344,6 +344,13 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     atomKK->sync(Host, RADIUS_MASK);
     fix_state->decide_particles(force->newton_bond);
   }
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void BondBeamKokkos<DeviceType>::specials_to_host()
+{
+  atomKK->sync(Host, TAG_MASK | SPECIAL_MASK);
 }
 
 /* ----------------------------------------------------------------------

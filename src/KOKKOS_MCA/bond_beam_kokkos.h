@@ -62,6 +62,7 @@ class BondBeamKokkos : private MCAKokkos::RequiresKokkos, public BondBeam {
   MCAKokkos::int_1d<DeviceType> d_frozen;
   Kokkos::View<int, DeviceType> d_nfrozen;
   void refrozen_to_host();
+  void specials_to_host() override;
   template <int DIM> void launch(int nlist, class NeighborKokkos *neighborKK);
   void particle_states_to_device(int nall);
   void find_candidates(int nlist, class NeighborKokkos *neighborKK);

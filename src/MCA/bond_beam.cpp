@@ -680,9 +680,9 @@ bool BondBeam::remove_broken(int nbroken, const int *pairs)
   bigint total;
   MPI_Allreduce(&counted, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   atom->nbonds -= total;
-  return (update_special && total > 0)
-      ? forget_broken_pairs(static_cast<int>(reported.size() / 2), reported.data())
-      : false;
+  if (!update_special || total == 0) return false;
+  specials_to_host();
+  return forget_broken_pairs(static_cast<int>(reported.size() / 2), reported.data());
 }
 
 /* ----------------------------------------------------------------------

@@ -96,6 +96,9 @@ class BondBeam : public Bond {
   // returns whether the special lists of local atoms changed
   bool remove_broken(int nbroken, const int *pairs);
   bool forget_broken_pairs(int nbroken, const int *pairs);
+  // before the special lists change on the host (a bond broke on some
+  // rank): the Kokkos variant brings them there first
+  virtual void specials_to_host() {}
 
   void allocate();
   void estimate_longest_bond();

@@ -13,9 +13,9 @@ doc/src/fix_beam_freeze.rst; digest A.8 and R4).
 * a disordered scene (thermal particles with elastic contacts in a
   periodic box, which bond when they meet, prob 0.6 per attempt, while
   their bonds melt) makes the same bonds at the same steps, and the same
-  trajectory to round-off, on
-  1 and 2 ranks, newton_bond on and off, continued from a restart file,
-  and with the Kokkos styles (the fix on the host) on 1 and 2 threads;
+  trajectory to round-off, on 1, 2 and 4 ranks, newton_bond on and off,
+  continued from a restart file, and with the Kokkos styles (the fix on
+  the host) on 1 and 2 threads;
 * the example examples/beam_flow at reduced size: a sheared layer whose
   melted bonds re-bond with new neighbours flows steadily to large
   strains, keeping its bonds; without the fix it comes apart;
@@ -291,11 +291,11 @@ def test_scene_melts_and_freezes_new_pairs(scene_reference):
 
 
 @pytest.mark.mpi
-@pytest.mark.parametrize("newton", ["on", "off"])
-def test_scene_on_two_ranks(scene_reference, tmp_path, newton):
+@pytest.mark.parametrize("nprocs,newton", [(2, "on"), (2, "off"), (4, "on")])
+def test_scene_on_ranks(scene_reference, tmp_path, nprocs, newton):
     build, ref = scene_reference
-    compare_scenes(ref, scene(build, tmp_path, nprocs=2, newton=newton),
-                   f"2 ranks newton_bond {newton}")
+    compare_scenes(ref, scene(build, tmp_path, nprocs=nprocs, newton=newton),
+                   f"{nprocs} ranks newton_bond {newton}")
 
 
 def test_scene_continued_from_a_restart(scene_reference, tmp_path):

@@ -400,7 +400,7 @@ def test_forces_independent_of_newton_and_ranks(build, tmp_path):
     data = beam_data(tmp_path / "patch.data", sites, bonds, ((-6, 6), (-6, 6)))
     runs = {}
     for newton in ("on", "off"):
-        for nprocs in (1, 2):
+        for nprocs in (1, 2, 4):
             d = tmp_path / f"{newton}{nprocs}"
             runs[newton, nprocs] = snapshot(build, d, header(data, newton=newton)
                                             + COEFF_SHEAR + DEFORM, nprocs=nprocs)
@@ -417,6 +417,7 @@ def test_ranks_and_restart_follow_one_run(build, tmp_path):
     steps = 400
     _, one = nve_run(build, tmp_path / "one", 0.004, steps)
     _, two = nve_run(build, tmp_path / "two", 0.004, steps, nprocs=2)
+    _, four = nve_run(build, tmp_path / "four", 0.004, steps, nprocs=4)
     _, split = nve_run(build, tmp_path / "split", 0.004, steps,
                        tail=f"run {steps // 2}\nwrite_restart half.restart\n")
     restart = f"""
@@ -435,7 +436,7 @@ run             {steps // 2}
     build.run(restart, tmp_path / "split")
     resumed = read_dump(tmp_path / "split" / "traj.dump")[-1]
     ref = one[-1]
-    for name, snap in (("2 ranks", two[-1]), ("restart", resumed)):
+    for name, snap in (("2 ranks", two[-1]), ("4 ranks", four[-1]), ("restart", resumed)):
         diff = max(np.abs(snap[c] - ref[c]).max() / np.abs(ref[c]).max()
                    for c in ("x", "y", "vx", "vy", "omegaz"))
         print(f"{name}: largest relative difference after {steps} steps {diff:.1e}")

@@ -291,7 +291,7 @@ def test_forces_independent_of_newton_and_ranks(build, tmp_path):
     coeff = f"bond_style beam\nbond_coeff 1 {TIMOSHENKO}\n" + DEFORM
     runs = {}
     for newton in ("on", "off"):
-        for nprocs in (1, 2):
+        for nprocs in (1, 2, 4):
             script = header(data, newton=newton) + coeff
             runs[newton, nprocs] = snapshot(build, tmp_path / f"{newton}{nprocs}", script,
                                             nprocs=nprocs)

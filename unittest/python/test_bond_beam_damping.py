@@ -195,7 +195,8 @@ def test_damping_is_the_same_on_ranks_and_newton(build, tmp_path, dim):
     steps = 200
     ref_thermo, ref = balance_run(build, tmp_path / "one", dim, 0.004, steps)
     names = ["x", "y", "vx", "vy", "omegaz"] + (["z", "vz", "omegax", "omegay"] if dim == 3 else [])
-    for label, kwargs in (("2 ranks", {"nprocs": 2}), ("newton_bond off", {"newton": "off"})):
+    for label, kwargs in (("2 ranks", {"nprocs": 2}), ("4 ranks", {"nprocs": 4}),
+                          ("newton_bond off", {"newton": "off"})):
         thermo, snaps = balance_run(build, tmp_path / label.replace(" ", "_"), dim, 0.004, steps,
                                     **kwargs)
         diff = max(np.abs(snaps[-1][c] - ref[-1][c]).max() / np.abs(ref[-1][c]).max()

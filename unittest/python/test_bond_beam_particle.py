@@ -165,7 +165,7 @@ def test_particle_stress_and_candidates_of_a_t(build, tmp_path):
     assert bond_pairs(tmp_path / "bond" / "decided.data") == set()
 
 
-@pytest.mark.parametrize("nprocs,newton", [(2, "on"), (2, "off"), (1, "off")])
+@pytest.mark.parametrize("nprocs,newton", [(2, "on"), (2, "off"), (1, "off"), (4, "on")])
 def test_t_decides_the_same_on_ranks_and_newton(build, tmp_path, nprocs, newton):
     ref = t_shape(build, tmp_path / "ref")
     snap = t_shape(build, tmp_path / "run", nprocs=nprocs, newton=newton)
@@ -222,7 +222,7 @@ def test_mean_stress_is_the_trace_of_the_bond_stress(build, tmp_path, dim):
     # the bond style tallies them): round-off
     assert worst < 1e-12
     assert np.all(snap["f_BEAM_STATE[2]"] > 0.0) and np.all(snap["f_BEAM_STATE[3]"] > 0)
-    for nprocs, newton in ((2, "on"), (2, "off"), (1, "off")):
+    for nprocs, newton in ((2, "on"), (2, "off"), (1, "off"), (4, "on")):
         other, _ = deformed(build, tmp_path / f"{nprocs}{newton}", dim, nprocs, newton)
         for column in STATE.split():
             diff = np.abs(other[column] - snap[column]).max() / np.abs(snap[column]).max()

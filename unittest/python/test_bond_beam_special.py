@@ -158,7 +158,7 @@ def test_torn_strip_with_a_pair_style_is_the_same_on_ranks_and_newton(tmp_path):
     moved = max(np.abs(ref[1][-1][c] - plain[1][-1][c]).max() for c in ("x", "y"))
     print(f"{first - last:.0f} bonds broken; the pair moved the particles by up to {moved:.1e}")
     assert moved > 1e-6    # the broken neighbours do interact
-    for nprocs, newton in ((2, "on"), (2, "off")):
+    for nprocs, newton in ((2, "on"), (2, "off"), (4, "on")):
         beam2d.compare_strips(ref, beam2d.strip_run(build, tmp_path / f"{nprocs}{newton}", nprocs,
                                                     newton, extra=STRIP_PAIR),
                               f"with lj/cut: {nprocs} ranks, newton_bond {newton}")

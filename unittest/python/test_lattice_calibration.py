@@ -96,6 +96,39 @@ def test_unreachable_moduli_are_refused():
     assert "--moduli applies to mlp lattices" in result.stderr
 
 
+
+def test_glen_prefactor_of_the_beam_lattice():
+    """glen_creep_prefactor: the initial shear creep rate k tau^3 of a
+    melting beam lattice (Levin's theorem; simulated in
+    test_bond_beam_melt.py).  Checked here against the sum of the squared
+    bond energies written out for the three bond directions of a uniform
+    shear (0, 60, 120 degrees; area per particle sqrt3 / 2, three bonds
+    per particle), against the exponent (k tau^3 is the rate: the prefactor
+    does not depend on tau, and it is linear in A), and on the command
+    line; bad input is refused."""
+    kn, ks, e, a = 30.0, 2.7, 100.0, 3.0e-4
+    k = lc.glen_creep_prefactor(kn, ks, e, a)
+    mu = lc.beam_moduli(kn, ks)["mu"]
+    for tau in (0.05, 0.2):
+        strain = tau / (2.0 * mu)
+        energies = [0.5 * strain ** 2 * (kn * math.sin(2 * t) ** 2 + ks * math.cos(2 * t) ** 2)
+                    for t in (0.0, math.pi / 3.0, 2.0 * math.pi / 3.0)]
+        rate = 4.0 * a * e * e * sum(u * u for u in energies) / (SQRT3 / 2.0) / tau
+        assert rate == pytest.approx(k * tau ** 3, rel=1e-12)
+    assert lc.glen_creep_prefactor(kn, ks, e, 2 * a) == pytest.approx(2 * k, rel=1e-15)
+    assert k / a == pytest.approx(19.4161, abs=1e-4)
+    result = subprocess.run([sys.executable, str(TOOL), "beam", "--E2", "36.658939422331585",
+                             "--nu2", "0.29449838187702265", "--E-bond", "100", "--glen",
+                             "3e-4"], capture_output=True, text=True)
+    assert result.returncode == 0 and "(19.4161 A)" in result.stdout, result.stdout
+    result = subprocess.run([sys.executable, str(TOOL), "beam", "--E2", "36.6", "--nu2", "0.29",
+                             "--glen", "3e-4"], capture_output=True, text=True)
+    assert result.returncode == 2 and "--glen needs --E-bond" in result.stderr
+    with pytest.raises(lc.CalibrationError, match=r"A = 0 must be > 0"):
+        lc.glen_creep_prefactor(kn, ks, e, 0.0)
+    with pytest.raises(lc.CalibrationError, match=r"k_s = -1 must be >= 0"):
+        lc.glen_creep_prefactor(kn, -1.0, e, a)
+
 def long_wave_moduli(build, directory, coeff):
     """mu and lambda + 2 mu from D / q^2 of transverse and longitudinal waves
     of two wavelengths (D/q^2 = M (sqrt3/2) c^2 + O(q^2), extrapolated)."""

@@ -432,13 +432,15 @@ def test_newton_and_ranks_do_not_change_the_forces(build, tmp_path, style):
     ref = disordered_forces(build, tmp_path / "one", style)
     off = disordered_forces(build, tmp_path / "off", style, newton="off")
     two = disordered_forces(build, tmp_path / "two", style, nprocs=2)
+    four = disordered_forces(build, tmp_path / "four", style, nprocs=4)
     print(f"{style}: newton off {relative_difference(off, ref):.1e}, 2 ranks "
-          f"{relative_difference(two, ref):.1e}")
+          f"{relative_difference(two, ref):.1e}, 4 ranks {relative_difference(four, ref):.1e}")
     assert np.abs(ref[:, :2]).max() > 1e-2
     # a full list: the same sums whatever newton_pair; other ranks add the
     # neighbours of an atom in another order (round-off)
     assert relative_difference(off, ref) < 1e-14
     assert relative_difference(two, ref) < 1e-13
+    assert relative_difference(four, ref) < 1e-13
 
 
 @pytest.mark.parametrize("style", ["literal", "conservative"])
