@@ -50,6 +50,8 @@ import argparse
 import math
 import sys
 
+import numpy as np
+
 SQRT3 = math.sqrt(3.0)
 
 
@@ -112,6 +114,35 @@ def mlp_static_moduli(k1, k2):
     lattice (C11 = lambda + 2 mu, C12 = lambda): those of a body loaded by
     forces in a uniform state (a tension test, a pressed slab)."""
     return moduli(SQRT3 / 2.0 * (k1 + k2 / 2.0), SQRT3 / 4.0 * k2)
+
+
+def mlp_dynamical_matrix(k1, k2, q, c=1.0):
+    """The 2 x 2 dynamical matrix (unit masses) of the hexagonal k1/k2
+    lattice of spacing c at the wave vectors q (shape (..., 2)):
+    D(q) = sum over the six neighbours e of (k1 I + k2 e e^T)(1 - cos(c q.e))."""
+    q = np.asarray(q, dtype=float)
+    d = np.zeros(q.shape[:-1] + (2, 2))
+    for k in range(6):
+        e = np.array([math.cos(k * math.pi / 3.0), math.sin(k * math.pi / 3.0)])
+        weight = 1.0 - np.cos(c * q @ e)
+        d += weight[..., None, None] * (k1 * np.eye(2) + k2 * np.outer(e, e))
+    return d
+
+
+def mlp_lowest_mode(k1, k2, c=1.0, n=61):
+    """The lowest eigenvalue of the dynamical matrix over the Brillouin zone
+    (an n x n grid of the reciprocal cell, the zone-boundary points M
+    included for odd n) and its wave vector: >= 0 (0 at q = 0) where the
+    lattice is stable.  A negative k1 (nu_2D > 1/3) is stable down to
+    k1 = -k2/4, where the wave modulus mu = sqrt3 (k1 + k2/4) vanishes and
+    the zone-boundary mode M goes soft with it (D_min(M) = 8 (k1 + k2/4))."""
+    b1 = 2.0 * math.pi / c * np.array([1.0, -1.0 / SQRT3])
+    b2 = 2.0 * math.pi / c * np.array([0.0, 2.0 / SQRT3])
+    u, v = np.meshgrid(np.linspace(0.0, 1.0, n), np.linspace(0.0, 1.0, n), indexing="ij")
+    q = u[..., None] * b1 + v[..., None] * b2
+    lowest = np.linalg.eigvalsh(mlp_dynamical_matrix(k1, k2, q, c))[..., 0]
+    at = np.unravel_index(np.argmin(lowest), lowest.shape)
+    return float(lowest[at]), q[at]
 
 
 def mlp_springs(e2, nu2, kind="waves"):

@@ -41,6 +41,36 @@ def depth_profile(start, broken, surface):
     return np.bincount(np.floor(np.array(depth) + 0.5).astype(int).clip(0)) if depth else []
 
 
+def clusters(data):
+    """The fragments of a data file's particles, clusters joined by its
+    bonds (union-find): {atom ID: lowest atom ID of its cluster}."""
+    parent = {a: a for a in data[0]}
+
+    def root(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+    for bonds in data[1].values():
+        for a, b in bonds:
+            ra, rb = root(a), root(b)
+            if ra != rb:
+                parent[max(ra, rb)] = min(ra, rb)
+    return {a: root(a) for a in data[0]}
+
+
+def read_fragments(path):
+    """{atom ID: fragment ID} of the dump of compute fragment/atom."""
+    lines = open(path).read().split("ITEM: ATOMS id c_frag")[-1].strip().splitlines()
+    return {int(w[0]): int(float(w[1])) for w in (line.split() for line in lines)}
+
+
+def fragment_sizes(fragment_of):
+    """Fragment sizes (particles), largest first."""
+    return sorted(np.bincount(np.unique(list(fragment_of.values()), return_inverse=True)[1]),
+                  reverse=True)
+
+
 def thermo(path):
     rows = []
     for block in re.findall(r"^\s*Step\s+Time.*?\n(.*?)^Loop", open(path).read(), re.M | re.S):
@@ -60,6 +90,10 @@ def main(log="log.fretting", start_file="fretting.start.data", end_file="frettin
     print(f"substrate bonds {total}, broken {len(broken)} ({100.0 * len(broken) / total:.1f} %)")
     print("broken bonds by row below the surface: "
           + ", ".join(f"{k}: {n}" for k, n in enumerate(profile)))
+    sizes = fragment_sizes(clusters(end))
+    debris = [n for n in sizes[2:]]
+    print(f"fragments {len(sizes)}: the two bodies of {sizes[0]} and {sizes[1]} particles, "
+          f"debris {len(debris)} (sizes {', '.join(map(str, debris)) or 'none'})")
 
     import matplotlib
     matplotlib.use("Agg")

@@ -67,3 +67,13 @@ def test_fretting_breaks_the_surface_under_the_pad(build, tmp_path):
     assert near >= 0.75
     assert 2 * stripped >= len(surface)
     assert deepest > 3.0
+    # fragments (R11): compute fragment/atom's clusters are those of the
+    # intact bonds of the end's data file (union-find here): the substrate
+    # and the pad, and debris if any
+    frag = plot.read_fragments(tmp_path / "fretting.fragments.dump")
+    mine = plot.clusters(end)
+    canon = lambda of: sorted(sorted(a for a in of if of[a] == f) for f in set(of.values()))
+    sizes = plot.fragment_sizes(frag)
+    print(f"fragments {len(sizes)}: sizes {sizes[:2]} and debris {sizes[2:]}")
+    assert canon(frag) == canon(mine)
+    assert len(sizes) >= 2 and sizes[1] >= PADX

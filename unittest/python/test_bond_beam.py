@@ -10,10 +10,15 @@ reference cases of ../shared/reference/numfrac_lattice_particles_digest.md:
   elements are exact for a point load, so the tip deflection PL^3/3EI
   and rotation PL^2/2EI are those of the discrete beam for any N); the
   axial forces are the second-order shortening, below EA theta_max^2;
-* element null space and objectivity (cases 1, 3): a patch of beams
+* element null space (case 1): the stiffness of one beam at rest, by
+  central differences of its forces and torques, is the linear frame
+  element's, with exactly three zero eigenvalues;
+* objectivity (cases 1, 3): a patch of beams
   deformed, then moved rigidly (translated and turned by 90 degrees with
   its particles): the same energy, and forces and torques turned with it,
   to 1e-12 of their scale; undeformed and turned: no force at all;
+* scale invariance (R14): every length times 2.5 at the same E and
+  density runs the same motion with the factors of Howto_mlp;
 * energy conservation (case 5): a deformed patch with spins in NVE
   (fix nve/mca) conserves energy with the error of velocity Verlet (4 times
   less when the time step halves), linear and angular momentum (spin
@@ -216,6 +221,121 @@ run             40000
 
 # ---------------------------------------------------------------------------
 # null space and objectivity (cases 1, 3)
+
+
+def element_stiffness(build, directory, length=1.3, h=1e-5):
+    """The 6 x 6 stiffness of one beam at rest (particles at (0, 0) and
+    (L, 0)), by central differences of its forces and torques (fx, fy,
+    tqz of both ends) in the coordinates (x, y, theta) of both ends."""
+    data = beam_data(directory / "beam.data", [(0.0, 0.0), (length, 0.0)], [(0, 1)],
+                     ((-3, 4), (-3, 3)))
+    script = header(data) + COEFF + """
+group           end1 id 1
+group           end2 id 2
+run             0
+"""
+    frame = 0
+    for atom in (1, 2):
+        for dof in ("x", "y", "theta"):
+            for sign in (1, -1):
+                if dof == "theta":
+                    move = f"mca_set end{atom} angle {math.degrees(sign * h):.17g}"
+                    back = f"mca_set end{atom} angle 0.0"
+                else:
+                    step = lambda v: f"{v:.17g} 0" if dof == "x" else f"0 {v:.17g}"
+                    move = f"displace_atoms end{atom} move {step(sign * h)} 0 units box"
+                    back = f"displace_atoms end{atom} move {step(-sign * h)} 0 units box"
+                frame += 1
+                script += (f"{move}\nrun             0\nwrite_dump      all custom probe{frame}.dump "
+                           f"id fx fy tqz modify format float %.17g sort id\n{back}\n")
+    build.run(script, directory)
+    frames = [read_dump(directory / f"probe{k}.dump")[0] for k in range(1, frame + 1)]
+    rows = [np.concatenate([[f["fx"][a], f["fy"][a], f["tqz"][a]] for a in (0, 1)])
+            for f in frames]
+    k = np.zeros((6, 6))
+    for col in range(6):
+        k[:, col] = -(rows[2 * col] - rows[2 * col + 1]) / (2 * h)
+    return k
+
+
+def test_element_has_three_rigid_modes_and_the_frame_stiffness(build, tmp_path):
+    """Reference case 1: the stiffness of one Euler-Bernoulli beam at rest
+    (central differences of its forces and torques) is the linear frame
+    element's (EA/L; 12EI/L^3, 6EI/L^2, 4EI/L, 2EI/L) to 1e-6 of its
+    largest entry, symmetric, and has exactly three zero eigenvalues (two
+    translations and the rigid rotation: below 1e-6 of the largest, the
+    other three above 1e-3 of it)."""
+    L, E, A, I = 1.3, 100.0, 0.1, 0.001
+    k = element_stiffness(build, tmp_path, L)
+    a, b, c, d, e = E * A / L, 12 * E * I / L ** 3, 6 * E * I / L ** 2, 4 * E * I / L, 2 * E * I / L
+    frame = np.array([[a, 0, 0, -a, 0, 0],
+                      [0, b, c, 0, -b, c],
+                      [0, c, d, 0, -c, e],
+                      [-a, 0, 0, a, 0, 0],
+                      [0, -b, -c, 0, b, -c],
+                      [0, c, e, 0, -c, d]])
+    scale = np.abs(frame).max()
+    eig = np.linalg.eigvalsh(0.5 * (k + k.T))
+    print(f"stiffness to {np.abs(k - frame).max() / scale:.1e} of the frame element's, asymmetry "
+          f"{np.abs(k - k.T).max() / scale:.1e}; eigenvalues {', '.join(f'{v:.6g}' for v in eig)}")
+    assert np.abs(k - frame).max() < 1e-6 * scale
+    assert np.abs(k - k.T).max() < 1e-6 * scale
+    assert np.sum(np.abs(eig) < 1e-6 * eig.max()) == 3
+    assert np.sum(eig > 1e-3 * eig.max()) == 3
+
+
+def scaled_patch_run(build, directory, s, steps=300):
+    """The deformed patch of DEFORM in NVE with every length times s at
+    the same E and areal density: A s, I s^3, masses s^2, J s^4, time
+    step s (digest R14); the state after `steps` steps."""
+    sites, bonds = hex_patch()
+    data = beam_data(directory / "patch.data", s * sites, bonds, ((-6 * s, 6 * s),) * 2,
+                     radius=0.5 * s, mass=s * s, inertia=0.1 * s ** 4)
+    script = header(data).replace("comm_modify     cutoff 2.5",
+                                  f"comm_modify     cutoff {2.5 * s!r}") + f"""
+bond_style      beam
+bond_coeff      1 100.0 {0.1 * s!r} {0.001 * s ** 3!r} shear 40.0 0.8333333333333334
+run             0 post no
+variable        dx atom {0.03 * s!r}*sin(3.1*id)
+variable        dy atom {0.04 * s!r}*cos(2.3*id)
+variable        th atom 6.0*sin(1.3*id)
+displace_atoms  all move v_dx v_dy 0.0
+mca_set         all angle v_th
+fix             1 all nve/mca
+fix             2 all enforce2d
+timestep        {0.002 * s!r}
+thermo_style    custom step pe ke
+thermo_modify   norm no format float %.17g
+thermo          {steps}
+dump            d all custom {steps} state.dump id x y vx vy omegaz fx fy tqz
+dump_modify     d format float %.17g sort id
+run             {steps}
+"""
+    build.run(script, directory)
+    return read_dump(directory / "state.dump")[-1], thermo_pe(directory)
+
+
+def test_lengths_scale_out(build, tmp_path):
+    """Scale invariance (digest R14; Howto_mlp, "Units and scale"): with
+    every length times s = 2.5 at the same E and areal density (sections
+    A s, I s^3, masses s^2, moments of inertia s^4) the lattice runs the
+    same motion in the time step times s: after 300 steps the positions
+    are s times, the velocities the same, the spins 1/s times, the forces
+    s times, the torques and energies s^2 times those of the unscaled
+    patch (to 1e-11: round-off of the scaled arithmetic; measured 1.1e-13)."""
+    s = 2.5
+    ref, t_ref = scaled_patch_run(build, tmp_path / "one", 1.0)
+    big, t_big = scaled_patch_run(build, tmp_path / "scaled", s)
+    factors = {"x": s, "y": s, "vx": 1.0, "vy": 1.0, "omegaz": 1.0 / s, "fx": s, "fy": s,
+               "tqz": s * s}
+    worst = 0.0
+    for name, factor in factors.items():
+        diff = np.abs(big[name] - factor * ref[name]).max() / np.abs(factor * ref[name]).max()
+        worst = max(worst, diff)
+    energy = abs(t_big["PotEng"][-1] - s * s * t_ref["PotEng"][-1]) / abs(t_ref["PotEng"][-1] * s * s)
+    print(f"scaled by {s}: largest relative difference {worst:.1e}, energy {energy:.1e}")
+    assert np.abs(ref["vx"]).max() > 1e-3    # it moves
+    assert worst < 1e-11 and energy < 1e-11
 
 
 @pytest.mark.parametrize("coeff", [COEFF, COEFF_SHEAR, COEFF_SPRINGS],

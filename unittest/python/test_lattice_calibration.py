@@ -77,6 +77,48 @@ def test_reference_cases():
     assert lc.shear_beam_kr(0.4, 1.5) == pytest.approx(0.4 * 1.5 ** 2 / 2.0)
 
 
+
+def test_periodic_affine_moduli_of_case_9():
+    """Reference case 9 (k1 = 0.3, k2 = 1.7, box deformations): pure-shear
+    mu 0.9959 and lambda + 2 mu 2.7280 are the static moduli, the
+    simple-shear mu 1.2557 the waves' (the null Lagrangian sqrt3 k1 det H
+    tells them apart), the rotation energy per omega^2 sqrt3 k1 = 0.5196."""
+    static, waves = lc.mlp_static_moduli(0.3, 1.7), lc.mlp_moduli(0.3, 1.7)
+    assert round(static["mu"], 4) == 0.9959
+    assert round(static["lambda"] + 2.0 * static["mu"], 4) == 2.7280
+    assert round(waves["mu"], 4) == 1.2557
+    assert round(SQRT3 * 0.3, 4) == 0.5196
+    assert waves["mu"] - static["mu"] == pytest.approx(SQRT3 * 0.3 / 2.0, rel=1e-14)
+
+
+def test_long_wave_stability_bound_of_case_15():
+    """Reference case 15 (the linear hexagonal model, k2 = 1, k1 < 0): the
+    lowest eigenvalue of the dynamical matrix over the Brillouin zone is 0
+    (at q = 0) for k1 = -0.20 and -0.24 and -0.080 for k1 = -0.26 (at the
+    zone boundary M); the bound is k1 = -k2/4, where mu = sqrt3 (k1 + k2/4)
+    vanishes (bisection to 1e-9, for k2 = 1 and 2.5).  The same dynamical
+    matrix gives the long waves of the simulated lattices: its long-wave
+    limit D / q^2 has the eigenvalues (sqrt3/2)(mu, lambda + 2 mu)."""
+    for k1 in (-0.20, -0.24):
+        lowest, _ = lc.mlp_lowest_mode(k1, 1.0)
+        assert abs(lowest) < 1e-12
+    lowest, q = lc.mlp_lowest_mode(-0.26, 1.0)
+    assert lowest == pytest.approx(-0.080, abs=1e-12)
+    assert q == pytest.approx([math.pi, math.pi / SQRT3], abs=1e-12)    # M
+    for k2 in (1.0, 2.5):
+        lo, hi = -k2, 0.0
+        while hi - lo > 1e-10:
+            mid = 0.5 * (lo + hi)
+            unstable = lc.mlp_lowest_mode(mid, k2, n=21)[0] < -1e-13
+            lo, hi = (mid, hi) if unstable else (lo, mid)
+        print(f"k2 = {k2}: stable down to k1 = {hi:.10f} (-k2/4 = {-k2 / 4:.10f})")
+        assert hi == pytest.approx(-k2 / 4.0, abs=1e-9)
+    m = lc.mlp_moduli(0.3, 1.7)
+    q = 1e-4
+    d = np.linalg.eigvalsh(lc.mlp_dynamical_matrix(0.3, 1.7, np.array([q, 0.0]))) / q ** 2
+    assert d == pytest.approx([SQRT3 / 2 * m["mu"], SQRT3 / 2 * (m["lambda"] + 2 * m["mu"])],
+                              rel=1e-7)
+
 def test_unreachable_moduli_are_refused():
     for springs in (lc.mlp_springs, lc.beam_springs, static_springs):
         with pytest.raises(lc.CalibrationError, match=r"nu_2D = 0.4 > 1/3.*at most 1/3"):
