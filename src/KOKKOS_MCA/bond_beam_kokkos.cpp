@@ -294,6 +294,7 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     k_records.modify_host();
     k_records.template sync<DeviceType>();
   }
+  if (update->setupflag && update->whichflag == 1) check_stable_timestep();
 
   const int nall = atom->nlocal + atom->nghost;
   if (particle) particle_states_to_device(nall);
@@ -344,6 +345,26 @@ template <class DeviceType> void BondBeamKokkos<DeviceType>::compute(int eflag, 
     atomKK->sync(Host, RADIUS_MASK);
     fix_state->decide_particles(force->newton_bond);
   }
+}
+
+/* ----------------------------------------------------------------------
+   the stable time step: the CPU style's, on the host copies of the state
+   and of the records and bond list
+------------------------------------------------------------------------- */
+
+template <class DeviceType> bool BondBeamKokkos<DeviceType>::stable_timestep(StableStep &out)
+{
+  if (!records_current()) return false;
+  atomKK->sync(Host,
+               X_MASK | TAG_MASK | RMASS_MASK | MCA_QUAT_MASK | MCA_GEOMETRY_MASK |
+                   (radii ? RADIUS_MASK : 0));
+  auto *neighborKK = static_cast<NeighborKokkos *>(neighbor);
+  neighborKK->k_bondlist.sync_host();
+  k_records.sync_host();
+  auto list = neighborKK->k_bondlist.view_host();
+  out = stable_timestep_of(neighbor->nbondlist, list.data(), (long) list.stride(0),
+                           (long) list.stride(1), k_records.view_host().data());
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */

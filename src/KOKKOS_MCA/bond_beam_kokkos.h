@@ -45,6 +45,7 @@ class BondBeamKokkos : private MCAKokkos::RequiresKokkos, public BondBeam {
   ~BondBeamKokkos() override;
   void compute(int, int) override;
   void init_style() override;
+  bool stable_timestep(StableStep &out) override;
 
  private:
   class AtomKokkos *atomKK;

@@ -615,6 +615,184 @@ namespace BeamKernels {
   }
 
   /* --------------------------------------------------------------------
+     the stable time step (doc/src/bond_beam.rst, "Stable time step";
+     digest R12).  The stiffness of a bond now is K = G^T H G: its
+     measures m (2-D: u, q_i, q_j; 3-D: u, p, a_i, a_j, c_i, c_j), their
+     gradients G by the degrees of freedom of the two ends (per end its
+     DIM displacements, then its turn(s); i's end first) and H, the loads'
+     derivatives by the measures (the axial, torsion and bending
+     stiffness).  This is the material stiffness of the element at its
+     present geometry; the geometric part (the loads times the measures'
+     second derivatives) vanishes in the reference state and is left out.
+     The squared angular frequencies of the lattice are the eigenvalues of
+     S = M^-1/2 K M^-1/2 (M: the masses, and the moments of inertia for
+     the turns), and Gershgorin's theorem bounds the largest of them by
+     the largest absolute row sum of S:  omega^2 <= max_r sum_c |S_rc|.
+     The block that couples a particle with itself is summed over all its
+     bonds before the absolute values are taken (self: nd x nd per
+     particle); a block that couples it with a partner is one bond's
+     (couple: the row sums of its absolute values, nd per particle).
+  -------------------------------------------------------------------- */
+
+  enum { BEAM_MAX_MEASURES = 6, BEAM_MAX_DOF = 12 };
+
+  struct BeamTangent {
+    int nm, nd;    // measures; degrees of freedom of one end (3 in 2-D, 6 in 3-D)
+    double g[BEAM_MAX_MEASURES][BEAM_MAX_DOF];
+    double h[BEAM_MAX_MEASURES][BEAM_MAX_MEASURES];
+  };
+
+  MCA_INLINE int tangent_dof(const int dimension)
+  {
+    return dimension == 3 ? 6 : 3;
+  }
+
+  // the Gershgorin sums of one particle: self (nd x nd), then couple (nd)
+  MCA_INLINE int gershgorin_size(const int dimension)
+  {
+    const int nd = tangent_dof(dimension);
+    return nd * nd + nd;
+  }
+
+  template <int DIM>
+  MCA_INLINE BeamTangent beam_tangent(const BeamCoeff &c, const double *ref, const double *d,
+                                      const double *qi, const double *qj)
+  {
+    BeamTangent t;
+    const int nd = (DIM == 3) ? 6 : 3;
+    t.nd = nd;
+    t.nm = (DIM == 3) ? 6 : 3;
+    for (int m = 0; m < BEAM_MAX_MEASURES; m++) {
+      for (int k = 0; k < BEAM_MAX_DOF; k++) t.g[m][k] = 0.0;
+      for (int k = 0; k < BEAM_MAX_MEASURES; k++) t.h[m][k] = 0.0;
+    }
+    const double L0 = ref[REF_L0];
+    const double L = sqrt(dot3(d, d));
+    // u = L - L0: du/dx_j = e = -du/dx_i
+    for (int k = 0; k < DIM; k++) {
+      t.g[0][k] = -d[k] / L;
+      t.g[0][nd + k] = d[k] / L;
+    }
+    t.h[0][0] = axial_stiffness(c, L0);
+    if (DIM == 2) {
+      // q_i = t_i + b_i - a (q_j likewise), da/dx_j = e_perp / L = -da/dx_i
+      const double px = -d[1] / (L * L), py = d[0] / (L * L);
+      for (int m = 1; m <= 2; m++) {
+        t.g[m][0] = px;
+        t.g[m][1] = py;
+        t.g[m][3] = -px;
+        t.g[m][4] = -py;
+      }
+      t.g[1][2] = 1.0;
+      t.g[2][5] = 1.0;
+      double own, cross;
+      bending_stiffness(c, c.EI, c.shear, L0, own, cross);
+      t.h[1][1] = t.h[2][2] = own;
+      t.h[1][2] = t.h[2][1] = cross;
+    } else {
+      const FrameState st = frame_state(ref, d, qi, qj);
+      // the twist p: dp/dw_i = gp = -dp/dw_j
+      for (int k = 0; k < 3; k++) {
+        t.g[1][3 + k] = st.gp[k];
+        t.g[1][nd + 3 + k] = -st.gp[k];
+      }
+      t.h[1][1] = torsion_stiffness(c, L0);
+      // a measure of one end (gradient gm by e): dm/dx_j = (gm - (gm.e) e) / L
+      // = -dm/dx_i, and dm/dw = gm x e for that end's turn
+      const double *grad[4] = {st.gai, st.gaj, st.gci, st.gcj};
+      for (int m = 0; m < 4; m++) {
+        const double *gm = grad[m];
+        const int end = (m % 2) ? nd : 0;
+        const double along = dot3(gm, st.e);
+        double w[3];
+        cross3(gm, st.e, w);
+        for (int k = 0; k < 3; k++) {
+          const double dx = (gm[k] - along * st.e[k]) / st.L;
+          t.g[2 + m][k] = -dx;
+          t.g[2 + m][nd + k] = dx;
+          t.g[2 + m][end + 3 + k] = w[k];
+        }
+      }
+      double own_z, cross_z, own_y, cross_y;
+      bending_stiffness(c, c.EIz, c.shear_z, L0, own_z, cross_z);
+      bending_stiffness(c, c.EIy, c.shear_y, L0, own_y, cross_y);
+      t.h[2][2] = t.h[3][3] = own_z;
+      t.h[2][3] = t.h[3][2] = cross_z;
+      t.h[4][4] = t.h[5][5] = own_y;
+      t.h[4][5] = t.h[5][4] = cross_y;
+    }
+    return t;
+  }
+
+  // the reciprocal square roots of a particle's mass (its DIM
+  // displacements) and moment of inertia (its turns); 0 for a particle
+  // without either, which an integrator does not move
+  MCA_INLINE void mass_scale(const int dimension, const double mass, const double inertia,
+                             double *s)
+  {
+    const double st = mass > 0.0 ? 1.0 / sqrt(mass) : 0.0;
+    const double sr = inertia > 0.0 ? 1.0 / sqrt(inertia) : 0.0;
+    const int nd = tangent_dof(dimension);
+    for (int k = 0; k < nd; k++) s[k] = (k < dimension) ? st : sr;
+  }
+
+  // adds one bond's S to its ends' sums (si, sj: mass_scale of each end;
+  // sum_i or sum_j nullptr: rows this rank does not sum)
+  MCA_INLINE void gershgorin_add(const BeamTangent &t, const double *si, const double *sj,
+                                 double *sum_i, double *sum_j)
+  {
+    const int nd = t.nd, n = 2 * nd;
+    double s[BEAM_MAX_DOF], hg[BEAM_MAX_MEASURES][BEAM_MAX_DOF];
+    for (int k = 0; k < nd; k++) {
+      s[k] = si[k];
+      s[nd + k] = sj[k];
+    }
+    for (int m = 0; m < t.nm; m++)
+      for (int c = 0; c < n; c++) {
+        double v = 0.0;
+        for (int l = 0; l < t.nm; l++) v += t.h[m][l] * t.g[l][c];
+        hg[m][c] = v;
+      }
+    for (int r = 0; r < n; r++) {
+      double *sum = (r < nd) ? sum_i : sum_j;
+      if (!sum) continue;
+      const int row = r % nd, own = (r < nd) ? 0 : nd;
+      for (int c = 0; c < n; c++) {
+        double k = 0.0;
+        for (int m = 0; m < t.nm; m++) k += t.g[m][r] * hg[m][c];
+        k *= s[r] * s[c];
+        if (c >= own && c < own + nd)
+          sum[row * nd + c - own] += k;
+        else
+          sum[nd * nd + row] += fabs(k);
+      }
+    }
+  }
+
+  // a particle's bound of omega^2: its largest absolute row sum
+  MCA_INLINE double gershgorin_bound(const int nd, const double *sum)
+  {
+    double most = 0.0;
+    for (int r = 0; r < nd; r++) {
+      double row = sum[nd * nd + r];
+      for (int c = 0; c < nd; c++) row += fabs(sum[r * nd + c]);
+      most = row > most ? row : most;
+    }
+    return most;
+  }
+
+  // the stable time step of a mode of angular frequency omega under the
+  // bonds' stiffness-proportional damping beta (damping ratio
+  // zeta = beta omega / 2): velocity Verlet, whose forces read the
+  // half-step velocities, is stable for omega dt < 2 (sqrt(1 + zeta^2) - zeta)
+  // (2 undamped).  It falls as omega grows: a bound of omega bounds it.
+  MCA_INLINE double critical_step(const double omega, const double beta)
+  {
+    const double zeta = 0.5 * beta * omega;
+    return 2.0 * (sqrt(1.0 + zeta * zeta) - zeta) / omega;
+  }
+
+  /* --------------------------------------------------------------------
      the particle criterion (criterion particle; digest A.7): the stress of
      a particle averaged over its bonds (all of them, of any type),
        sigma = -(1/V) sym sum_b d_b (x) f_b / 2,

@@ -379,8 +379,7 @@ void BondBeam::init_style()
   // update/special/bonds, here on any newton_bond setting)
   const double *lj = force->special_lj, *coul = force->special_coul;
   const bool overlay = lj[1] == 1.0 && coul[1] == 1.0;
-  const bool excluded = lj[1] == 0.0 && (coul[1] == 0.0 || coul[1] == 1.0) && lj[2] == 1.0 &&
-      lj[3] == 1.0 && coul[2] == 1.0 && coul[3] == 1.0;
+  const bool excluded = bonded_pairs_excluded(force);
   if (breaking && force->pair && !overlay && !excluded)
     error->all(FLERR,
                "Bond style beam with break and a pair style requires special_bonds lj/coul 1 1 1 "
@@ -396,6 +395,13 @@ void BondBeam::init_style()
                    "bonded pairs in its neighbor list whatever the special_bonds weights (the "
                    "size lists of granular styles): bonded particles touch through it too",
                    force->pair_style);
+}
+
+bool BondBeam::bonded_pairs_excluded(const Force *force)
+{
+  const double *lj = force->special_lj, *coul = force->special_coul;
+  return lj[1] == 0.0 && (coul[1] == 0.0 || coul[1] == 1.0) && lj[2] == 1.0 && lj[3] == 1.0 &&
+      coul[2] == 1.0 && coul[3] == 1.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -502,6 +508,8 @@ void BondBeam::compute(int eflag, int vflag)
     }
     fill_records(nlist, nlist ? bondlist[0] : nullptr, 3, 1, records);
   }
+  // (before the forces: a bond that breaks now still counts)
+  if (update->setupflag && update->whichflag == 1) check_stable_timestep();
 
   std::vector<int> broken;
   if (particle) fix_state->clear_sums(atom->nlocal + atom->nghost);
@@ -636,6 +644,124 @@ template <int DIM> void BondBeam::evaluate(int nlist, int **bondlist, std::vecto
   }
   // (a step taken: not the forces of a run's setup)
   if (damp_now && !update->setupflag) fix_state->dissipated.local += dissipated * update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   the stable time step (doc/src/bond_beam.rst, "Stable time step"):
+   Gershgorin's bound of the fastest mode of the listed bonds, from the
+   particles' masses and moments of inertia (atom_style mca: what fix
+   nve/mca and fix nve/damped integrate with)
+------------------------------------------------------------------------- */
+
+bool BondBeam::records_current() const
+{
+  return built_at == neighbor->ncalls;
+}
+
+bool BondBeam::stable_timestep(StableStep &out)
+{
+  if (!records_current()) return false;
+  const int nlist = neighbor->nbondlist;
+  out = stable_timestep_of(nlist, nlist ? neighbor->bondlist[0] : nullptr, 3, 1, records);
+  return true;
+}
+
+BondBeam::StableStep BondBeam::stable_timestep_of(int nlist, const int *list, long row_stride,
+                                                  long column_stride, const double *recs)
+{
+  const int dimension = domain->dimension;
+  const int nd = tangent_dof(dimension), size = gershgorin_size(dimension);
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int newton_bond = force->newton_bond;
+  double **x = atom->x;
+  double **quat = fix_state->avec->quat;
+  const double *inertia = fix_state->avec->inertia;
+  const double *rmass = atom->rmass;
+  const double *radius = atom->radius;
+  std::vector<double> &sums = fix_state->gershgorin;
+  sums.assign((std::size_t) nall * size, 0.0);
+
+  // with newton_bond off each bond of a local atom is listed here: the
+  // rows of local atoms only; on, each bond once: both ends' rows, the
+  // ghosts' then to their owners
+  double beta = 0.0;
+  bigint nbonds = 0;
+  for (int n = 0; n < nlist; n++) {
+    const int type = list[n * row_stride + 2 * column_stride];
+    if (type <= 0) continue;
+    const double *rec = recs + (std::size_t) n * nrec;
+    const bool swap = rec[REC_SWAP] != 0.0;
+    const int i = list[n * row_stride + (swap ? column_stride : 0)];
+    const int j = list[n * row_stride + (swap ? 0 : column_stride)];
+    const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1],
+                         dimension == 3 ? x[j][2] - x[i][2] : 0.0};
+    BeamCoeff sized;
+    const BeamCoeff &c = bond_coeff(coeffs[type], dimension, radius[i], radius[j], sized);
+    const BeamTangent t = (dimension == 3) ? beam_tangent<3>(c, rec + REC_REF, d, quat[i], quat[j])
+                                           : beam_tangent<2>(c, rec + REC_REF, d, quat[i], quat[j]);
+    double si[6], sj[6];
+    mass_scale(dimension, rmass[i], inertia[i], si);
+    mass_scale(dimension, rmass[j], inertia[j], sj);
+    double *sum_i = (newton_bond || i < nlocal) ? &sums[(std::size_t) i * size] : nullptr;
+    double *sum_j = (newton_bond || j < nlocal) ? &sums[(std::size_t) j * size] : nullptr;
+    gershgorin_add(t, si, sj, sum_i, sum_j);
+    beta = MAX(beta, c.beta);
+    if (newton_bond || i < nlocal) nbonds++;
+  }
+  if (newton_bond) fix_state->sum_gershgorin();
+
+  double most = 0.0;
+  tagint atom_most = 0;
+  for (int i = 0; i < nlocal; i++) {
+    const double bound = gershgorin_bound(nd, &sums[(std::size_t) i * size]);
+    if (bound > most) {
+      most = bound;
+      atom_most = atom->tag[i];
+    }
+  }
+  sums.clear();
+  sums.shrink_to_fit();
+
+  StableStep out;
+  double all_most, all_beta;
+  MPI_Allreduce(&most, &all_most, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&beta, &all_beta, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&nbonds, &out.nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  // the particle: of those with the largest bound, the lowest ID
+  tagint mine = (most == all_most && all_most > 0.0) ? atom_most : MAXTAGINT;
+  MPI_Allreduce(&mine, &out.atom, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (!(all_most > 0.0)) {
+    out.dt = INFINITY;
+    out.omega = out.zeta = 0.0;
+    out.atom = 0;
+    return out;
+  }
+  out.omega = sqrt(all_most);
+  out.zeta = 0.5 * all_beta * out.omega;
+  out.dt = critical_step(out.omega, all_beta);
+  return out;
+}
+
+void BondBeam::check_stable_timestep()
+{
+  StableStep s;
+  if (!stable_timestep(s) || comm->me != 0) return;
+  if (!std::isfinite(s.dt)) {
+    utils::logmesg(lmp, "bond beam: no bond acts, so bond beam sets no limit to the time step\n");
+    return;
+  }
+  const std::string damping_text = (s.zeta > 0.0) ? fmt::format(", damping ratio {:.3g}", s.zeta)
+                                                  : std::string();
+  utils::logmesg(lmp,
+                 "bond beam: stable time step {:.6g} (Gershgorin bound of the fastest mode: omega "
+                 "<= {:.6g}{}; {} bonds; stiffest row: particle {})\n",
+                 s.dt, s.omega, damping_text, s.nbonds, s.atom);
+  if (update->dt > s.dt)
+    error->warning(FLERR,
+                   "Time step {} is above the stable time step {:.6g} of bond_style beam ({:.4g} "
+                   "times it; Gershgorin's bound, below which the bonds are stable): use a time "
+                   "step <= {:.6g}",
+                   update->dt, s.dt, update->dt / s.dt, s.dt);
 }
 
 /* ----------------------------------------------------------------------

@@ -55,6 +55,25 @@ class BondBeam : public Bond {
   double single(int, double, int, int, double &) override;
   double memory_usage() override;
 
+  // the stable time step of the listed bonds (Gershgorin's bound of the
+  // fastest mode, beam_kernels.h; doc/src/bond_beam.rst): made at the setup
+  // of each run and when compute beam/timestep asks (the Kokkos variant
+  // brings the state to the host first).  Needs the records of a bond list
+  // (a first run); returns whether it could be made
+  struct StableStep {
+    double dt;       // the stable time step (infinite: no bonds act)
+    double omega;    // the bound of the fastest angular frequency
+    double zeta;     // its damping ratio (bond damping)
+    tagint atom;     // the particle whose row gives the bound (0: none)
+    bigint nbonds;
+  };
+  virtual bool stable_timestep(StableStep &out);
+
+  // the special weights leave bonded pairs out of the pair style (1-2 lj
+  // weight 0, 1-3 and 1-4 weights 1: lj/coul 0 1 1 or lj 0 1 1 coul 1 1 1),
+  // so that a broken bond's particles come back into it
+  static bool bonded_pairs_excluded(const class Force *force);
+
  protected:
   BeamKernels::BeamCoeff *coeffs;    // by bond type
   class FixBeamState *fix_state;
@@ -99,6 +118,12 @@ class BondBeam : public Bond {
   // before the special lists change on the host (a bond broke on some
   // rank): the Kokkos variant brings them there first
   virtual void specials_to_host() {}
+
+  StableStep stable_timestep_of(int nlist, const int *list, long row_stride, long column_stride,
+                                const double *records);
+  bool records_current() const;
+  // at a dynamics run's setup: the estimate in the log, a warning above it
+  void check_stable_timestep();
 
   void allocate();
   void estimate_longest_bond();

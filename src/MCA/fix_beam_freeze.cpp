@@ -16,6 +16,7 @@
 #include "atom.h"
 #include "atom_masks.h"
 #include "beam_kernels.h"
+#include "bond_beam.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_beam_state.h"
@@ -120,8 +121,7 @@ void FixBeamFreeze::init()
                "Fix beam/freeze requires a pair style (the contacts of particles that are not "
                "bonded; pair_style zero for none)");
   const double *lj = force->special_lj, *coul = force->special_coul;
-  if (!(lj[1] == 0.0 && (coul[1] == 0.0 || coul[1] == 1.0) && lj[2] == 1.0 && lj[3] == 1.0 &&
-        coul[2] == 1.0 && coul[3] == 1.0))
+  if (!BondBeam::bonded_pairs_excluded(force))
     error->all(FLERR,
                "Fix beam/freeze requires special_bonds lj/coul 0 1 1 (or lj 0 1 1 coul 1 1 1): "
                "bonded pairs are left out of the neighbor lists and broken ones come back into "

@@ -36,7 +36,8 @@ using namespace BeamKernels;
 
 FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), avec(nullptr), particle_criterion(0), sums(nullptr), pstate(nullptr),
-    maxbond(0), nslot(SLOT_REF + nref(domain->dimension)), state(nullptr), nmax_old(0)
+    maxbond(0), reverse_stage(REVERSE_PARTICLE), nslot(SLOT_REF + nref(domain->dimension)),
+    state(nullptr), nmax_old(0)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix BEAM_STATE command (internal fix of bond beam)");
   if (!atom->molecular || atom->bond_per_atom <= 0)
@@ -54,6 +55,7 @@ FixBeamState::FixBeamState(LAMMPS *lmp, int narg, char **arg) :
   extscalar = 1;
   ecouple_flag = 1;
   comm_forward = 4;
+  comm_reverse = gershgorin_size(domain->dimension);
   // per-atom array: the particle criterion's state of each particle
   // (zero unless a bond type uses it)
   peratom_flag = 1;
@@ -193,12 +195,12 @@ void FixBeamState::use_particle_criterion(int on)
         for (int k = 0; k < NPSTATE; k++) pstate[i][k] = 0.0;
     particle_criterion = 0;
     comm_forward = 4;
-    comm_reverse = 0;
+    comm_reverse = gershgorin_size(domain->dimension);
     return;
   }
   particle_criterion = 1;
   comm_forward = 4 + NPSTATE;
-  comm_reverse = NPSUM;
+  comm_reverse = MAX(NPSUM, gershgorin_size(domain->dimension));
   memory->grow(sums, atom->nmax, NPSUM, "beam:sums");
 }
 
@@ -213,6 +215,12 @@ void FixBeamState::clear_sums(int n)
 int FixBeamState::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (reverse_stage == REVERSE_GERSHGORIN) {
+    const int size = gershgorin_size(domain->dimension);
+    for (int i = first; i < first + n; i++)
+      for (int k = 0; k < size; k++) buf[m++] = gershgorin[(std::size_t) i * size + k];
+    return m;
+  }
   for (int i = first; i < first + n; i++)
     for (int k = 0; k < NPSUM; k++) buf[m++] = sums[i][k];
   return m;
@@ -221,12 +229,25 @@ int FixBeamState::pack_reverse_comm(int n, int first, double *buf)
 void FixBeamState::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
+  if (reverse_stage == REVERSE_GERSHGORIN) {
+    const int size = gershgorin_size(domain->dimension);
+    for (int k = 0; k < n; k++)
+      for (int c = 0; c < size; c++) gershgorin[(std::size_t) list[k] * size + c] += buf[m++];
+    return;
+  }
   for (int k = 0; k < n; k++) {
     double *s = sums[list[k]];
     for (int c = 0; c < 6; c++) s[PSUM_VIRIAL + c] += buf[m + PSUM_VIRIAL + c];
     take_candidate(s, buf[m + PSUM_MEASURE], buf[m + PSUM_PARTNER]);
     m += NPSUM;
   }
+}
+
+void FixBeamState::sum_gershgorin()
+{
+  reverse_stage = REVERSE_GERSHGORIN;
+  MCACompat::reverse_comm(comm, this);
+  reverse_stage = REVERSE_PARTICLE;
 }
 
 /* ----------------------------------------------------------------------

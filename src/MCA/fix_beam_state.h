@@ -24,6 +24,8 @@ FixStyle(BEAM_STATE,FixBeamState);
 #include "fix.h"
 #include "mca_damping_fix.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 /* ----------------------------------------------------------------------
@@ -122,6 +124,13 @@ class FixBeamState : public Fix {
   // the ghosts' sums to their owners (newton_bond on), then each owned
   // particle's stress and candidate
   void decide_particles(int newton_bond);
+
+  // the stable time step bound (BondBeam::stable_timestep_of): the
+  // Gershgorin sums of the rows of each local and ghost atom
+  // (BeamKernels::gershgorin_size values each), and with newton_bond on
+  // the ghosts' sums added to their owners'
+  std::vector<double> gershgorin;
+  void sum_gershgorin();
   BeamKernels::ParticleState particle_state(int i) const
   {
     return {pstate[i][BeamKernels::PSTATE_SIGMA], pstate[i][BeamKernels::PSTATE_TAU],
@@ -129,7 +138,9 @@ class FixBeamState : public Fix {
   }
 
  private:
-  int maxbond;       // bond slots per atom
+  int maxbond;          // bond slots per atom
+  int reverse_stage;    // what pack_reverse_comm sends: REVERSE_*
+  enum { REVERSE_PARTICLE, REVERSE_GERSHGORIN };
   int nslot;         // values per slot: SLOT_REF + the reference of the dimension
   double **state;    // maxbond * nslot values per atom
   int nmax_old;      // rows allocated

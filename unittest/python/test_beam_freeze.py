@@ -91,7 +91,7 @@ run             {STEPS}
     return thermo, r
 
 
-@pytest.mark.parametrize("nevery", [1, 7])
+@pytest.mark.parametrize("nevery", [1, 10])
 def test_approaching_particles_freeze_stress_free(build, tmp_path, nevery):
     thermo, r = approach(build, tmp_path, nevery)
     steps = thermo["Step"].astype(int)
