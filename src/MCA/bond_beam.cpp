@@ -430,7 +430,7 @@ void BondBeam::estimate_longest_bond()
 
 bool BondBeam::references_stale(int nlist) const
 {
-  if (built_at != neighbor->ncalls) return true;
+  if (!records_current()) return true;
   if (nlist != built_n)
     error->one(FLERR,
                "Bond style beam: the bond list changed without a neighbor list build "
