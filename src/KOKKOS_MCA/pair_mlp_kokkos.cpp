@@ -26,6 +26,7 @@
 #include "memory_kokkos.h"
 #include "neigh_list_kokkos.h"
 #include "neighbor.h"
+#include "update.h"
 
 using namespace LAMMPS_NS;
 using namespace MLPKernels;
@@ -100,6 +101,54 @@ template <class DeviceType, int FRAME> struct MLPForceCall {
   KOKKOS_INLINE_FUNCTION void operator()(const int ii, EV_FLOAT &ev) const
   {
     kernel.template eval<FRAME>(ii, ev);
+  }
+};
+
+// the stable time step: the Gershgorin bound of omega^2 from each local
+// atom's rows (PairMLP::row_bounds), and the number of pairs counted
+template <class DeviceType, int FRAME> struct MLPRowBoundKernel {
+  template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
+  view<decltype(AtomKokkos::k_x)> x;
+  view<decltype(AtomKokkos::k_type)> type;
+  view<decltype(AtomKokkos::k_rmass)> rmass;
+  view<decltype(AtomKokkos::k_mass)> mass;
+  Kokkos::View<MLPCoeff *, DeviceType> coeff;
+  MCAKokkos::double_2d<DeviceType> half_turn;
+  typename ArrayTypes<DeviceType>::t_int_1d ilist, numneigh;
+  typename ArrayTypes<DeviceType>::t_neighbors_2d neighbors;
+  MCAKokkos::double_1d<DeviceType> bound;
+  double special_lj[4];
+  int ntypes1, return_style, per_atom_mass;
+
+  KOKKOS_INLINE_FUNCTION double mass_of(const int i) const
+  {
+    return per_atom_mass ? rmass(i) : mass(type(i));
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int ii, bigint &pairs) const
+  {
+    const int i = ilist(ii);
+    const int row = type(i) * ntypes1;
+    MLPRowSums sums;
+    gershgorin_clear(sums);
+    const int jnum = numneigh(i);
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = neighbors(i, jj);
+      const double factor = special_lj[(j >> SBBITS) & 3];
+      j &= NEIGHMASK;
+      const double dx = x(i, 0) - x(j, 0), dy = x(i, 1) - x(j, 1);
+      const double rsq = dx * dx + dy * dy;
+      const MLPCoeff &p = coeff(row + type(j));
+      if (rsq >= p.cutsq || factor == 0.0) continue;
+      double cos_nt = p.cos_nt0, sin_nt = p.sin_nt0, jac[4];
+      if (FRAME)
+        turned_axes(p, half_turn(i, 0), half_turn(i, 1), half_turn(j, 0), half_turn(j, 1), cos_nt,
+                    sin_nt);
+      pair_jacobian(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt, jac);
+      gershgorin_add(jac, 1.0 / sqrt(mass_of(j)), sums);
+      pairs++;
+    }
+    bound(i) = gershgorin_bound(sums, mass_of(i));
   }
 };
 
@@ -231,6 +280,60 @@ template <class DeviceType> void PairMLPKokkos<DeviceType>::compute(int eflag, i
     k_freturn.template modify<DeviceType>();
     k_freturn.sync_host();
   }
+  if (update->setupflag && update->whichflag == 1) check_stable_timestep();
+}
+
+/* ----------------------------------------------------------------------
+   the stable time step: the rows on the device, the reduction on the host
+------------------------------------------------------------------------- */
+
+template <class DeviceType> bool PairMLPKokkos<DeviceType>::stable_timestep(StableStep &out)
+{
+  if (!list || neighbor->lastcall < 0) return false;
+  const int per_atom_mass = atom->rmass ? 1 : 0;
+  atomKK->sync(execution_space, X_MASK | TYPE_MASK | (per_atom_mass ? RMASS_MASK : EMPTY_MASK));
+  if (!per_atom_mass) {
+    atomKK->k_mass.modify_host();
+    atomKK->k_mass.template sync<DeviceType>();
+  }
+  const int nlocal = atom->nlocal;
+  if ((int) k_row_bound.extent(0) < nlocal)
+    k_row_bound = MCAKokkos::dual_double_1d("pair:mlp_row_bound", atom->nmax);
+
+  auto *klist = static_cast<NeighListKokkos<DeviceType> *>(list);
+  auto fill = [&](auto &kernel) {
+    kernel.x = atomKK->k_x.template view<DeviceType>();
+    kernel.type = atomKK->k_type.template view<DeviceType>();
+    if (per_atom_mass)
+      kernel.rmass = atomKK->k_rmass.template view<DeviceType>();
+    else
+      kernel.mass = atomKK->k_mass.template view<DeviceType>();
+    kernel.coeff = d_coeff;
+    kernel.ilist = klist->d_ilist;
+    kernel.numneigh = klist->d_numneigh;
+    kernel.neighbors = klist->d_neighbors;
+    kernel.bound = k_row_bound.template view<DeviceType>();
+    for (int k = 0; k < 4; k++) kernel.special_lj[k] = force->special_lj[k];
+    kernel.ntypes1 = atom->ntypes + 1;
+    kernel.return_style = return_style;
+    kernel.per_atom_mass = per_atom_mass;
+  };
+  Kokkos::deep_copy(k_row_bound.template view<DeviceType>(), 0.0);
+  bigint pairs = 0;
+  if (frame) {
+    MLPRowBoundKernel<DeviceType, 1> kernel;
+    fill(kernel);
+    kernel.half_turn = frame_half_turns_on_device();
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, klist->inum), kernel, pairs);
+  } else {
+    MLPRowBoundKernel<DeviceType, 0> kernel;
+    fill(kernel);
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, klist->inum), kernel, pairs);
+  }
+  k_row_bound.template modify<DeviceType>();
+  k_row_bound.sync_host();
+  out = reduce_stable_timestep(k_row_bound.view_host().data(), pairs);
+  return true;
 }
 
 /* ----------------------------------------------------------------------

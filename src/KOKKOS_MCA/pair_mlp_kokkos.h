@@ -44,6 +44,7 @@ class PairMLPKokkos : private MCAKokkos::RequiresKokkos, public PairMLP {
   void compute(int, int) override;
   void init_style() override;
   double init_one(int, int) override;
+  bool stable_timestep(StableStep &out) override;
 
  private:
   class AtomKokkos *atomKK;
@@ -54,6 +55,7 @@ class PairMLPKokkos : private MCAKokkos::RequiresKokkos, public PairMLP {
   MCAKokkos::double_2d<DeviceType> d_half_turn;
   MCAKokkos::dual_double_1d k_body_angle;
   MCAKokkos::double_2d<DeviceType> frame_half_turns_on_device();
+  MCAKokkos::dual_double_1d k_row_bound;    // the stable time step's rows
 };
 
 }    // namespace LAMMPS_NS

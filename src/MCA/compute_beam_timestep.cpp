@@ -11,6 +11,7 @@
 
    See the README file in the top-level LAMMPS directory.
 ------------------------------------------------------------------------- */
+// clang-format on
 
 #include "compute_beam_timestep.h"
 
@@ -21,26 +22,16 @@
 
 using namespace LAMMPS_NS;
 
-static constexpr int NVALUES = 5;
-
 /* ----------------------------------------------------------------------
    compute ID group beam/timestep: the stable time step of the scene's
-   beams (the group is not used)
+   beams (the group is not used): dt, dt_run / dt, omega, zeta, the atom
 ------------------------------------------------------------------------- */
 
 ComputeBeamTimestep::ComputeBeamTimestep(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), bond(nullptr)
+    ComputeStableStep(lmp, narg, arg, 5), bond(nullptr)
 {
-  if (narg != 3) error->all(FLERR, "Compute beam/timestep takes no arguments, got {}", narg - 3);
-  scalar_flag = vector_flag = 1;
-  size_vector = NVALUES;
-  extscalar = extvector = 0;
-  vector = new double[NVALUES];
-}
-
-ComputeBeamTimestep::~ComputeBeamTimestep()
-{
-  delete[] vector;
+  not_ready = "the estimate is made from the bond list, which is built at the first run; "
+              "use 'run 0' before asking for it";
 }
 
 void ComputeBeamTimestep::init()
@@ -53,26 +44,15 @@ void ComputeBeamTimestep::init()
 
 /* ---------------------------------------------------------------------- */
 
-double ComputeBeamTimestep::compute_scalar()
+bool ComputeBeamTimestep::estimate(double *values)
 {
-  compute_vector();
-  invoked_scalar = update->ntimestep;
-  scalar = vector[0];
-  return scalar;
-}
-
-void ComputeBeamTimestep::compute_vector()
-{
-  invoked_vector = update->ntimestep;
   if (!bond) init();
   BondBeam::StableStep s;
-  if (!bond->stable_timestep(s))
-    error->all(FLERR,
-               "Compute beam/timestep: the estimate is made from the bond list, which is built at "
-               "the first run; use 'run 0' before asking for it");
-  vector[0] = s.dt;
-  vector[1] = update->dt / s.dt;
-  vector[2] = s.omega;
-  vector[3] = s.zeta;
-  vector[4] = (double) s.atom;
+  if (!bond->stable_timestep(s)) return false;
+  values[0] = s.dt;
+  values[1] = update->dt / s.dt;
+  values[2] = s.omega;
+  values[3] = s.zeta;
+  values[4] = (double) s.atom;
+  return true;
 }

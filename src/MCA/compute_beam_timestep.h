@@ -20,18 +20,18 @@ ComputeStyle(beam/timestep,ComputeBeamTimestep);
 #ifndef LMP_COMPUTE_BEAM_TIMESTEP_H
 #define LMP_COMPUTE_BEAM_TIMESTEP_H
 
-#include "compute.h"
+#include "compute_stable_step.h"
 
 namespace LAMMPS_NS {
 
 // the stable time step of bond_style beam's bonds (Gershgorin's bound)
-class ComputeBeamTimestep : public Compute {
+class ComputeBeamTimestep : public ComputeStableStep {
  public:
   ComputeBeamTimestep(class LAMMPS *, int, char **);
-  ~ComputeBeamTimestep() override;
   void init() override;
-  double compute_scalar() override;
-  void compute_vector() override;
+
+ protected:
+  bool estimate(double *values) override;
 
  private:
   class BondBeam *bond;

@@ -184,6 +184,112 @@ namespace MLPKernels {
     return out;
   }
 
+  /* --------------------------------------------------------------------
+     the stable time step (doc/src/pair_mlp.rst, "Stable time step"):
+     Gershgorin's bound of the fastest mode, omega^2 <= max over rows r of
+     sum_c |S_rc|, S = M^-1/2 K M^-1/2, K = -dF/dx the pairs' stiffness at
+     the present positions (and lattice axes).  The pair force on i is a
+     function of d = x_i - x_j alone, so K_ij = J and K_ii = -sum_j J with
+     J = df_i/dd; the row sums of atom i come from its own (full) list
+  -------------------------------------------------------------------- */
+
+  // U''(r)
+  MCA_INLINE double central_curvature(const MLPCoeff &p, double r)
+  {
+    if (p.central == MLP_HARMONIC) return p.a;
+    if (p.central == MLP_MORSE) {
+      const double e = exp(-p.b * (r - p.c));
+      return 2.0 * p.a * p.b * p.b * (2.0 * e * e - e);
+    }
+    const double sr2 = p.b * p.b / (r * r);
+    const double sr6 = sr2 * sr2 * sr2;
+    return 24.0 * p.a * (26.0 * sr6 * sr6 - 7.0 * sr6) / (r * r);
+  }
+
+  // s''(r) of the taper
+  MCA_INLINE double taper_curvature(const MLPCoeff &p, double r)
+  {
+    if (r <= p.taper_start) return 0.0;
+    const double w = p.cut - p.taper_start;
+    const double t = (r - p.taper_start) / w;
+    return -60.0 * t * (1.0 - t) * (1.0 - 2.0 * t) / (w * w);
+  }
+
+  // J = df_i/dd of pair_force (row-major 2x2).  With f = F_r u + F_t e_phi
+  // (u = d/r, e_phi = (-u_y, u_x)), in the basis (u, e_phi):
+  //   J_uu = dF_r/dr          J_ue = (dF_r/dphi - F_t) / r
+  //   J_eu = dF_t/dr          J_ee = (F_r + dF_t/dphi) / r
+  // (symmetric for the conservative variant: the Hessian of -E)
+  MCA_INLINE void pair_jacobian(const MLPCoeff &p, int return_style, double dx, double dy,
+                                double rsq, double factor, double cos_nt, double sin_nt,
+                                double *jac)
+  {
+    const double r = sqrt(rsq);
+    const double ux = dx / r, uy = dy / r;
+    double u, du, s, ds;
+    central_potential(p, r, u, du);
+    taper(p, r, s, ds);
+    const double dds = taper_curvature(p, r);
+    double fr = -(s * du + ds * u);
+    double dfr_dr = -(s * central_curvature(p, r) + 2.0 * ds * du + dds * u);
+    double dfr_dphi = 0.0, ft = 0.0, dft_dr = 0.0, dft_dphi = 0.0;
+    if (p.n > 0 && p.f0 != 0.0) {
+      double sn, cn;
+      return_angle(p, ux, uy, cos_nt, sin_nt, sn, cn);
+      if (return_style == MLP_LITERAL) {
+        ft = -p.f0 * s * sn;
+        dft_dr = -p.f0 * ds * sn;
+        dft_dphi = -p.f0 * s * p.n * cn;
+      } else {
+        const double v = p.f0 * p.r_ref / p.n * (1.0 - cn), dv = p.f0 * p.r_ref * sn;
+        fr -= ds * v;
+        dfr_dr -= dds * v;
+        dfr_dphi = -ds * dv;
+        ft = -s * dv / r;
+        dft_dr = -dv * (ds / r - s / rsq);
+        dft_dphi = -s * p.f0 * p.r_ref * p.n * cn / r;
+      }
+    }
+    const double juu = dfr_dr, jue = (dfr_dphi - ft) / r;
+    const double jeu = dft_dr, jee = (fr + dft_dphi) / r;
+    // R [[juu, jue], [jeu, jee]] R^T with R = [u e_phi]
+    const double m00 = ux * juu - uy * jeu, m01 = ux * jue - uy * jee;
+    const double m10 = uy * juu + ux * jeu, m11 = uy * jue + ux * jee;
+    jac[0] = factor * (m00 * ux - m01 * uy);
+    jac[1] = factor * (m00 * uy + m01 * ux);
+    jac[2] = factor * (m10 * ux - m11 * uy);
+    jac[3] = factor * (m10 * uy + m11 * ux);
+  }
+
+  // the row sums of one atom: the diagonal block sum_j J (its absolute
+  // values are taken at the end) and sum_j |J_rc| / sqrt(m_j) per row
+  struct MLPRowSums {
+    double diag[4];
+    double off[2];
+  };
+
+  MCA_INLINE void gershgorin_clear(MLPRowSums &g)
+  {
+    for (int k = 0; k < 4; k++) g.diag[k] = 0.0;
+    g.off[0] = g.off[1] = 0.0;
+  }
+
+  MCA_INLINE void gershgorin_add(const double *jac, double inv_sqrt_mass_j, MLPRowSums &g)
+  {
+    for (int k = 0; k < 4; k++) g.diag[k] += jac[k];
+    g.off[0] += (fabs(jac[0]) + fabs(jac[1])) * inv_sqrt_mass_j;
+    g.off[1] += (fabs(jac[2]) + fabs(jac[3])) * inv_sqrt_mass_j;
+  }
+
+  // the bound of omega^2 from atom i's rows
+  MCA_INLINE double gershgorin_bound(const MLPRowSums &g, double mass_i)
+  {
+    const double inv_sqrt = 1.0 / sqrt(mass_i);
+    const double row0 = (fabs(g.diag[0]) + fabs(g.diag[1])) / mass_i + g.off[0] * inv_sqrt;
+    const double row1 = (fabs(g.diag[2]) + fabs(g.diag[3])) / mass_i + g.off[1] * inv_sqrt;
+    return row0 > row1 ? row0 : row1;
+  }
+
   // the body of an atom in a lattice frame (fix mlp/frame): its group's one
   // body, or its molecule's (IDs 1 to nbody); -1: none (its axes stay put)
   MCA_INLINE int frame_body(int mask, int groupbit, int by_molecule, long long molecule, int nbody)

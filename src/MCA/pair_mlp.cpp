@@ -26,6 +26,7 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -297,6 +298,7 @@ void PairMLP::compute(int eflag, int vflag)
   } else {
     eval<0>();
   }
+  if (update->setupflag && update->whichflag == 1) check_stable_timestep();
 }
 
 /* ----------------------------------------------------------------------
@@ -368,6 +370,123 @@ template <int FRAME> void PairMLP::eval()
     f[i][1] += fy;
     if (freturn_flag) freturn[i] = sqrt(rx * rx + ry * ry);
   }
+}
+
+/* ----------------------------------------------------------------------
+   the stable time step (doc/src/pair_mlp.rst, "Stable time step"): the
+   Gershgorin bound of each local atom's two rows of M^-1/2 K M^-1/2 from
+   its full neighbour list (the masses of ghosts are communicated), at the
+   present positions and lattice axes (a frame's body angles held)
+------------------------------------------------------------------------- */
+
+double PairMLP::mass_of(int i) const
+{
+  return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+}
+
+template <int FRAME> bigint PairMLP::row_bounds(std::vector<double> &bound)
+{
+  double **x = atom->x;
+  const int *type = atom->type;
+  const double *special_lj = force->special_lj;
+  const int ntypes1 = atom->ntypes + 1;
+  const MLPCoeff *table = coeff_table.data();
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  bigint pairs = 0;
+  bound.assign(atom->nlocal, 0.0);
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const MLPCoeff *row = table + type[i] * ntypes1;
+    const int *jlist = firstneigh[i];
+    MLPRowSums sums;
+    gershgorin_clear(sums);
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      int j = jlist[jj];
+      const double factor = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1];
+      const double rsq = dx * dx + dy * dy;
+      const MLPCoeff &p = row[type[j]];
+      if (rsq >= p.cutsq || factor == 0.0) continue;
+      double cos_nt = p.cos_nt0, sin_nt = p.sin_nt0, jac[4];
+      if (FRAME)
+        turned_axes(p, half_turn[2 * i], half_turn[2 * i + 1], half_turn[2 * j],
+                    half_turn[2 * j + 1], cos_nt, sin_nt);
+      pair_jacobian(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt, jac);
+      gershgorin_add(jac, 1.0 / sqrt(mass_of(j)), sums);
+      pairs++;
+    }
+    bound[i] = gershgorin_bound(sums, mass_of(i));
+  }
+  return pairs;
+}
+
+bool PairMLP::stable_timestep(StableStep &out)
+{
+  if (!list || neighbor->lastcall < 0) return false;
+  std::vector<double> bound;
+  bigint pairs;
+  if (frame) {
+    frame_half_turns();
+    pairs = row_bounds<1>(bound);
+  } else {
+    pairs = row_bounds<0>(bound);
+  }
+  out = reduce_stable_timestep(bound.data(), pairs);
+  return true;
+}
+
+// bound: omega^2 of each local atom's rows; pairs_twice: the pairs as
+// the full lists count them (each from both sides)
+PairMLP::StableStep PairMLP::reduce_stable_timestep(const double *bound, bigint pairs_twice)
+{
+  double most = 0.0;
+  tagint atom_most = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (bound[i] > most) {
+      most = bound[i];
+      atom_most = atom->tag[i];
+    }
+  StableStep out;
+  double all_most;
+  bigint all_pairs;
+  MPI_Allreduce(&most, &all_most, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&pairs_twice, &all_pairs, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  out.pairs = all_pairs / 2;
+  tagint mine = (most == all_most && all_most > 0.0) ? atom_most : MAXTAGINT;
+  MPI_Allreduce(&mine, &out.atom, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (!(all_most > 0.0)) {
+    out.dt = INFINITY;
+    out.omega = 0.0;
+    out.atom = 0;
+    return out;
+  }
+  out.omega = sqrt(all_most);
+  out.dt = 2.0 / out.omega;
+  return out;
+}
+
+void PairMLP::check_stable_timestep()
+{
+  StableStep s;
+  if (!stable_timestep(s) || comm->me != 0) return;
+  if (!std::isfinite(s.dt)) {
+    utils::logmesg(lmp, "pair mlp: no pair acts, so pair mlp sets no limit to the time step\n");
+    return;
+  }
+  utils::logmesg(lmp,
+                 "pair mlp: stable time step {:.6g} (Gershgorin bound of the fastest mode: omega "
+                 "<= {:.6g}; {} pairs; stiffest row: atom {})\n",
+                 s.dt, s.omega, s.pairs, s.atom);
+  if (update->dt > s.dt)
+    error->warning(FLERR,
+                   "Time step {} is above the stable time step {:.6g} of pair_style mlp ({:.4g} "
+                   "times it; Gershgorin's bound, below which the pairs are stable): use a time "
+                   "step <= {:.6g}",
+                   update->dt, s.dt, update->dt / s.dt, s.dt);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -58,6 +58,16 @@ class PairMLP : public Pair {
   void *extract_peratom(const char *, int &) MCA_EXTRACT_PERATOM_OVERRIDE;
   double memory_usage() override;
 
+  // the stable time step (Gershgorin's bound; doc/src/pair_mlp.rst): false
+  // before the first neighbour list
+  struct StableStep {
+    double dt;       // 2 / omega (velocity Verlet); infinite if no pair acts
+    double omega;    // the bound of the fastest angular frequency
+    tagint atom;     // the atom of the largest row sum (lowest ID of ties)
+    bigint pairs;    // pairs within their cutoff (each once)
+  };
+  virtual bool stable_timestep(StableStep &out);
+
  protected:
   double cut_global, taper_width;
   int return_style;    // MLPKernels::MLPReturn
@@ -82,8 +92,14 @@ class PairMLP : public Pair {
   void find_frame();
   void frame_half_turns();
 
+  // the bound of omega^2 of each local atom's rows -> the estimate
+  double mass_of(int i) const;
+  StableStep reduce_stable_timestep(const double *bound, bigint pairs_twice);
+  void check_stable_timestep();
+
  private:
   template <int FRAME> void eval();
+  template <int FRAME> bigint row_bounds(std::vector<double> &bound);
 };
 
 }    // namespace LAMMPS_NS

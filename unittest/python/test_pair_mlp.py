@@ -479,7 +479,8 @@ def test_assembled_lattice_follows_the_prescribed_axes(build, tmp_path, theta0):
     of theta0) and a modulus far above that of randomly turned grains
     (0.05 without the return force in the reference logs, 0.04 for 600
     bonds of random directions); a porous lattice with defects, not a
-    single crystal (the reference logs: 0.38)."""
+    single crystal (the reference logs: 0.38); its time step stays far
+    below the stable one, which it prints."""
     script = (EXAMPLE / "in.assembly").read_text()
     build.run(script, tmp_path, variables={"visevery": 0, "theta0": theta0, "name": "run"})
     order = example_order()
@@ -490,6 +491,15 @@ def test_assembled_lattice_follows_the_prescribed_axes(build, tmp_path, theta0):
           f"{len(order.bonds(x, y))} bonds")
     assert abs(psi) > 0.25
     assert abs(axis - theta0) < 3.0
+    # the example's time step against the stable one of each thermo output
+    # (compute mlp/timestep): 12 % at the overlapping start, 3-4 % after
+    text = (tmp_path / "log.lammps").read_text()
+    rows = re.findall(r"^\s+\d+(?:\s+\S+){4}\s+(\S+)\s*$", text, re.M)
+    ratio = np.array([float(v) for v in rows])
+    assert len(ratio) >= 20
+    print(f"  time step / stable one: {ratio[0]:.3f} at the start, at most "
+          f"{ratio[1:].max():.3f} after")
+    assert 0.05 < ratio[0] < 0.25 and ratio[1:].max() < 0.08
 
 
 # --------------------------------------------------------------------------
