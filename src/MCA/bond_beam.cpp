@@ -24,6 +24,7 @@
 #include "force.h"
 #include "math_const.h"
 #include "mca_compat.h"
+#include "mca_largest_row.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -710,33 +711,23 @@ BondBeam::StableStep BondBeam::stable_timestep_of(int nlist, const int *list, lo
   }
   if (newton_bond) fix_state->sum_gershgorin();
 
-  double most = 0.0;
-  tagint atom_most = 0;
-  for (int i = 0; i < nlocal; i++) {
-    const double bound = gershgorin_bound(nd, &sums[(std::size_t) i * size]);
-    if (bound > most) {
-      most = bound;
-      atom_most = atom->tag[i];
-    }
-  }
+  std::vector<double> bound(nlocal);
+  for (int i = 0; i < nlocal; i++) bound[i] = gershgorin_bound(nd, &sums[(std::size_t) i * size]);
   sums.clear();
   sums.shrink_to_fit();
 
   StableStep out;
-  double all_most, all_beta;
-  MPI_Allreduce(&most, &all_most, 1, MPI_DOUBLE, MPI_MAX, world);
+  double all_beta;
+  const MCALargestRow largest = mca_largest_row(world, nlocal, bound.data(), atom->tag);
   MPI_Allreduce(&beta, &all_beta, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&nbonds, &out.nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  // the particle: of those with the largest bound, the lowest ID
-  tagint mine = (most == all_most && all_most > 0.0) ? atom_most : MAXTAGINT;
-  MPI_Allreduce(&mine, &out.atom, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (!(all_most > 0.0)) {
+  out.atom = largest.atom;
+  if (!(largest.value > 0.0)) {
     out.dt = INFINITY;
     out.omega = out.zeta = 0.0;
-    out.atom = 0;
     return out;
   }
-  out.omega = sqrt(all_most);
+  out.omega = sqrt(largest.value);
   out.zeta = 0.5 * all_beta * out.omega;
   out.dt = critical_step(out.omega, all_beta);
   return out;

@@ -23,6 +23,7 @@
 #include "force.h"
 #include "math_const.h"
 #include "mca_compat.h"
+#include "mca_largest_row.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -443,28 +444,18 @@ bool PairMLP::stable_timestep(StableStep &out)
 // the full lists count them (each from both sides)
 PairMLP::StableStep PairMLP::reduce_stable_timestep(const double *bound, bigint pairs_twice)
 {
-  double most = 0.0;
-  tagint atom_most = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (bound[i] > most) {
-      most = bound[i];
-      atom_most = atom->tag[i];
-    }
   StableStep out;
-  double all_most;
+  const MCALargestRow largest = mca_largest_row(world, atom->nlocal, bound, atom->tag);
   bigint all_pairs;
-  MPI_Allreduce(&most, &all_most, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&pairs_twice, &all_pairs, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   out.pairs = all_pairs / 2;
-  tagint mine = (most == all_most && all_most > 0.0) ? atom_most : MAXTAGINT;
-  MPI_Allreduce(&mine, &out.atom, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (!(all_most > 0.0)) {
+  out.atom = largest.atom;
+  if (!(largest.value > 0.0)) {
     out.dt = INFINITY;
     out.omega = 0.0;
-    out.atom = 0;
     return out;
   }
-  out.omega = sqrt(all_most);
+  out.omega = sqrt(largest.value);
   out.dt = 2.0 / out.omega;
   return out;
 }
