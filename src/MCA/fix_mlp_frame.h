@@ -64,6 +64,12 @@ class FixMLPFrame : public Fix {
   int by_molecule;
   int nbody;
   const double *body_angles() const { return angle.data(); }
+  // the angle atom i's body has turned (0 outside the bodies)
+  double atom_angle(int i) const
+  {
+    const int b = body_of(i);
+    return b < 0 ? 0.0 : angle[b];
+  }
 
  private:
   double **xref;                   // per atom: position in the reference relative to its

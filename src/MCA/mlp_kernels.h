@@ -299,6 +299,63 @@ namespace MLPKernels {
     return (molecule >= 1 && molecule <= nbody) ? static_cast<int>(molecule - 1) : -1;
   }
 
+  /* --------------------------------------------------------------------
+     the compensating surface force (fix mlp/traction; doc/src/
+     fix_mlp_traction.rst, digest B.4 (c)).  The return force's transverse
+     spring k1 carries the null Lagrangian kappa det(grad u) (kappa =
+     sqrt3 k1 on the hex lattice), which adds nothing in the bulk but the
+     traction -kappa cof(grad u) n on a free surface.  An atom short of
+     lattice neighbours gets it back: f_i = cof(A_i) S_i, with A_i its
+     displacement gradient and S_i = sum over its missing bonds of (k1 c) e
+     = -sum over its present ones of (k1 r) e_ij (e_ij from i towards j;
+     kappa l n of the surface it carries: on a close-packed facet of the
+     hex lattice l = c, its spacing).  For a rigid rotation this is the
+     return force of each missing bond to first order, so a turned body
+     feels no torque
+  -------------------------------------------------------------------- */
+
+  // (k1 r) of a pair at distance r: the transverse stiffness of its
+  // return force, d F_t / d(r dphi), times r: n f0 s(r) (literal) or
+  // n f0 s(r) r_ref / r (conservative)
+  MCA_INLINE double return_stiffness_length(const MLPCoeff &p, int return_style, double r)
+  {
+    if (p.n == 0 || p.f0 == 0.0) return 0.0;
+    double s, ds;
+    taper(p, r, s, ds);
+    const double k1r = p.n * p.f0 * s;
+    return return_style == MLP_LITERAL ? k1r : k1r * p.r_ref / r;
+  }
+
+  // the least-squares deformation gradient F = B C^-1 (row-major 2x2) of
+  // the neighbour vectors x_ij (now) and X_ij (reference), B = sum x X^T,
+  // C = sum X X^T; false if the X_ij do not span the plane
+  MCA_INLINE bool least_squares_gradient(const double *B, const double *C, double *F)
+  {
+    const double det = C[0] * C[3] - C[1] * C[2];
+    const double trace = C[0] + C[3];
+    if (!(det > 1.0e-6 * trace * trace)) return false;
+    const double i00 = C[3] / det, i01 = -C[1] / det, i10 = -C[2] / det, i11 = C[0] / det;
+    F[0] = B[0] * i00 + B[1] * i10;
+    F[1] = B[0] * i01 + B[1] * i11;
+    F[2] = B[2] * i00 + B[3] * i10;
+    F[3] = B[2] * i01 + B[3] * i11;
+    return true;
+  }
+
+  // the compensating force R cof(R^T F - I) S of an atom whose lattice
+  // frame has turned by a, (ca, sa) = (cos a, sin a); S in the reference.
+  // cof of a 2x2 A is [[A11, -A10], [-A01, A00]]
+  MCA_INLINE void surface_compensation(const double *F, double ca, double sa, double sx, double sy,
+                                       double &fx, double &fy)
+  {
+    // A = R^T F - I
+    const double a00 = ca * F[0] + sa * F[2] - 1.0, a01 = ca * F[1] + sa * F[3];
+    const double a10 = -sa * F[0] + ca * F[2], a11 = -sa * F[1] + ca * F[3] - 1.0;
+    const double gx = a11 * sx - a10 * sy, gy = -a01 * sx + a00 * sy;
+    fx = ca * gx - sa * gy;
+    fy = sa * gx + ca * gy;
+  }
+
   // ... with the axes of the type pair (no lattice frame)
   MCA_INLINE MLPPairForce pair_force(const MLPCoeff &p, int return_style, double dx, double dy,
                                      double rsq, double factor)

@@ -81,6 +81,11 @@ MLPCoeff &PairMLP::coeff_of(int i, int j)
   return coeff_table[i * (atom->ntypes + 1) + j];
 }
 
+const MLPCoeff &PairMLP::coefficients(int i, int j) const
+{
+  return coeff_table[i * (atom->ntypes + 1) + j];
+}
+
 /* ----------------------------------------------------------------------
    pair_style mlp cutoff [return literal|conservative] [taper width]
                          [frame fix-ID|none]
@@ -310,13 +315,8 @@ void PairMLP::frame_half_turns()
 {
   const int nall = atom->nlocal + atom->nghost;
   half_turn.resize(2 * (size_t) nall);
-  const int *mask = atom->mask;
-  const tagint *molecule = atom->molecule;
-  const double *angle = frame->body_angles();
   for (int i = 0; i < nall; i++) {
-    const int b = frame_body(mask[i], frame->groupbit, frame->by_molecule,
-                             frame->by_molecule ? molecule[i] : 0, frame->nbody);
-    const double a = (b < 0) ? 0.0 : angle[b];
+    const double a = frame->atom_angle(i);
     half_turn[2 * i] = cos(0.5 * a);
     half_turn[2 * i + 1] = sin(0.5 * a);
   }

@@ -68,6 +68,12 @@ class PairMLP : public Pair {
   };
   virtual bool stable_timestep(StableStep &out);
 
+  // what fix mlp/traction reads (after init): the coefficients of a type
+  // pair, the return force's variant, the lattice frame (nullptr: none)
+  const MLPKernels::MLPCoeff &coefficients(int i, int j) const;
+  int return_variant() const { return return_style; }
+  class FixMLPFrame *lattice_frame() const { return frame; }
+
  protected:
   double cut_global, taper_width;
   int return_style;    // MLPKernels::MLPReturn

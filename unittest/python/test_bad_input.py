@@ -239,6 +239,17 @@ CASES = [
      r"Fix mlp/frame: unknown keyword every \(allowed: body\)"),
     ("frame empty", MLP_BOX + "group none empty\nfix fr none mlp/frame 1\n",
      r"Fix mlp/frame: group none has no atoms of positive mass"),
+    ("traction args", MLP_BOX + "fix tr all mlp/traction 1\n",
+     r"Fix mlp/traction takes no arguments after the style, found 1"),
+    ("traction map", MLP_BOX + "fix tr all mlp/traction\n",
+     r"Fix mlp/traction requires an atom map \(atom_modify map array or hash\)"),
+    ("traction pair", MLP_BOX.replace("dimension       2\n", "dimension       2\n"
+                                      "atom_modify     map array\n")
+     + "pair_style lj/cut 1.3\npair_coeff * * 1 1\nfix tr all mlp/traction\nrun 0\n",
+     r"Fix mlp/traction requires pair_style mlp \(or mlp/kk\), not lj/cut"),
+    ("traction 3d", MLP_3D.replace("pair_style      mlp 1.3\n",
+                                   "fix tr all mlp/traction\npair_style      mlp 1.3\n"),
+     r"Fix mlp/traction requires dimension 2"),
     ("frame 3d", MLP_3D.replace("pair_style      mlp 1.3\n",
                                 "fix fr all mlp/frame 1\npair_style      mlp 1.3\n"),
      r"Fix mlp/frame requires dimension 2"),

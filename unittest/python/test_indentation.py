@@ -75,9 +75,11 @@ def test_hertz_contact_and_first_yield(build, tmp_path):
     assert abs(factor / exact - 1.0) < 0.10
 
 
-# a lens of radius 15 d pressed 0.9 d into the sample of HERTZ (3900 steps):
-# Johnson's index x = E* a / (sigma_y R) reaches 75 at a = 4.9 d
-TABOR = dict(HERTZ, Rind=15, depth=0.9, v=4, every=10)
+# a lens of radius 15 d pressed 0.9 d (3900 steps) into a sample of radius
+# 10 d and height 8 d (3.5k automata; examples/indentation presses a lens of
+# 25 d into one of 20 d by 16 d): Johnson's index x = E* a / (sigma_y R)
+# reaches 71 at a = 4.7 d
+TABOR = dict(HERTZ, Rind=15, Rs=10, Hs=8, rlens=7, rref=5, depth=0.9, v=4, every=10)
 
 
 def test_fully_plastic_mean_pressure(tmp_path):
@@ -101,7 +103,8 @@ def test_fully_plastic_mean_pressure(tmp_path):
           f"{mean / 2.8 - 1:+.4f} against Tabor's 2.8; expanding cavity at x = {x.max():.0f}: "
           f"{ia.cavity_model(x.max()):.3f}; whole cells of the touching lens automata at the "
           f"end: {loading['load'][-1] / cells / 315e6:.3f}")
-    assert plastic.sum() > 20 and x.max() > 70.0
+    # (x reaches 71: well into the fully plastic range)
+    assert plastic.sum() > 20 and x.max() > 65.0
     assert abs(mean / 2.8 - 1.0) < 0.15
 
 
@@ -141,8 +144,10 @@ def test_indentation_kokkos(tmp_path):
 
 
 # the scratch: a lens of radius 25 d pressed 0.25 d into a sample of radius
-# 10 d and height 8 d (3.5k automata), then slid 2.2 d along x at 8 m/s
-SCRATCH = dict(HERTZ, Rind=25, Rs=10, Hs=8, rlens=7, rref=5, depth=0.25, slide=2.2, v=8,
+# 8 d and height 6 d (2.1k automata; the example's is 14 d by 12 d), then
+# slid 2.2 d along x at 8 m/s: the contact (a = 3.5 d) stays 2 d inside
+# the sample's rim
+SCRATCH = dict(HERTZ, Rind=25, Rs=8, Hs=6, rlens=6, rref=5, depth=0.25, slide=2.2, v=8,
                every=10)
 
 
