@@ -64,7 +64,8 @@ class FixMLPFrame : public Fix {
   int by_molecule;
   int nbody;
   const double *body_angles() const { return angle.data(); }
-  // the angle atom i's body has turned (0 outside the bodies)
+  // the body of atom i (-1: none) and the angle it has turned (0 outside the bodies)
+  int body_of(int) const;
   double atom_angle(int i) const
   {
     const int b = body_of(i);
@@ -81,7 +82,6 @@ class FixMLPFrame : public Fix {
   bigint step_measured;            // -1: none yet
   int rate_known;                  // the rate is from an interval
 
-  int body_of(int) const;
   void measure();
 };
 

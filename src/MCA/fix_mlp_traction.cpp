@@ -45,7 +45,7 @@ constexpr int RECORD = 3 + 3 * FixMLPTraction::MAXREF;    // count, S, (ID, X) p
 
 FixMLPTraction::FixMLPTraction(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), pair(nullptr), list(nullptr), made(0), ref(nullptr), out(nullptr),
-    counted(-1)
+    counted(-1), nplan(0)
 {
   if (narg > 3)
     error->all(FLERR, "Fix mlp/traction takes no arguments after the style, found {}", arg[3]);
@@ -94,7 +94,7 @@ FixMLPTraction::~FixMLPTraction()
 
 int FixMLPTraction::setmask()
 {
-  return POST_FORCE | MIN_POST_FORCE;
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | POST_FORCE | MIN_POST_FORCE;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -119,6 +119,7 @@ void FixMLPTraction::init_list(int /*id*/, NeighList *ptr)
 void FixMLPTraction::setup(int vflag)
 {
   if (!made) make_reference();
+  build_plan();
   post_force(vflag);
 }
 
@@ -184,66 +185,119 @@ void FixMLPTraction::make_reference()
 }
 
 /* ----------------------------------------------------------------------
-   f_i = R cof(R^T F - I) S at the atoms with a surface vector
+   the plan of this local numbering: the surface atoms of the group and the
+   local index of the closest image of each of their lattice neighbours;
+   the per-atom output gets the surface vectors and no force
+------------------------------------------------------------------------- */
+
+void FixMLPTraction::post_neighbor()
+{
+  build_plan();
+}
+
+void FixMLPTraction::min_post_neighbor()
+{
+  build_plan();
+}
+
+void FixMLPTraction::build_plan()
+{
+  const int nlocal = atom->nlocal;
+  const int *mask = atom->mask;
+  const FixMLPFrame *frame = pair ? pair->lattice_frame() : nullptr;
+  nplan = 0;
+  plan_atom.clear();
+  plan_body.clear();
+  plan_partner.clear();
+  plan_ref.clear();
+  for (int i = 0; i < nlocal; i++) {
+    const double *record = ref[i];
+    out[i][0] = out[i][1] = out[i][2] = out[i][3] = 0.0;
+    if (!(mask[i] & groupbit)) continue;
+    out[i][0] = record[1];
+    out[i][1] = record[2];
+    if (record[1] == 0.0 && record[2] == 0.0) continue;
+    const int count = static_cast<int>(record[0]);
+    plan_atom.push_back(i);
+    plan_body.push_back(frame ? frame->body_of(i) : -1);
+    plan_ref.push_back(record[1]);
+    plan_ref.push_back(record[2]);
+    plan_ref.push_back(count);
+    for (int k = 0; k < MAXREF; k++) {
+      const double *row = &record[3 + 3 * k];
+      int j = i;
+      if (k < count) {
+        const auto partner = static_cast<tagint>(ubuf(row[0]).i);
+        j = atom->map(partner);
+        if (j < 0)
+          error->one(FLERR,
+                     "Fix mlp/traction: atom {}'s lattice neighbour {} is neither owned nor a "
+                     "ghost here (it moved beyond the ghost cutoff: raise comm_modify cutoff)",
+                     atom->tag[i], partner);
+        j = domain->closest_image(i, j);
+      }
+      plan_partner.push_back(j);
+      plan_ref.push_back(k < count ? row[1] : 0.0);
+      plan_ref.push_back(k < count ? row[2] : 0.0);
+    }
+    nplan++;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   f_i = R cof(R^T F - I) S at the plan's atoms
 ------------------------------------------------------------------------- */
 
 void FixMLPTraction::post_force(int /*vflag*/)
 {
-  double **x = atom->x;
-  double **f = atom->f;
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-  const FixMLPFrame *frame = pair->lattice_frame();
-  counts[0] = counts[1] = 0;
   counted = -1;
-  for (int i = 0; i < nlocal; i++) {
-    out[i][0] = out[i][1] = out[i][2] = out[i][3] = 0.0;
-    if (!(mask[i] & groupbit)) continue;
-    const double *record = ref[i];
-    const double sx = record[1], sy = record[2];
-    out[i][0] = sx;
-    out[i][1] = sy;
-    if (sx == 0.0 && sy == 0.0) continue;
-    double B[4] = {0.0, 0.0, 0.0, 0.0}, C[4] = {0.0, 0.0, 0.0, 0.0}, F[4];
-    const int count = static_cast<int>(record[0]);
-    for (int k = 0; k < count; k++) {
-      const double *row = &record[3 + 3 * k];
-      const auto partner = static_cast<tagint>(ubuf(row[0]).i);
-      int j = atom->map(partner);
-      if (j < 0)
-        error->one(FLERR,
-                   "Fix mlp/traction: atom {}'s lattice neighbour {} is neither owned nor a "
-                   "ghost here (it moved beyond the ghost cutoff: raise comm_modify cutoff)",
-                   atom->tag[i], partner);
-      j = domain->closest_image(i, j);
-      const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1];
-      B[0] += dx * row[1];
-      B[1] += dx * row[2];
-      B[2] += dy * row[1];
-      B[3] += dy * row[2];
-      C[0] += row[1] * row[1];
-      C[1] += row[1] * row[2];
-      C[3] += row[2] * row[2];
-    }
-    C[2] = C[1];
-    if (!MLPKernels::least_squares_gradient(B, C, F)) {
+  apply();
+}
+
+void FixMLPTraction::min_post_force(int vflag)
+{
+  post_force(vflag);
+}
+
+namespace {
+// the plan's rows and the positions as the shared kernel reads them
+template <class T> struct Rows {
+  const T *base;
+  int width;
+  T operator()(int m, int k) const { return base[m * width + k]; }
+};
+struct Positions {
+  double **x;
+  double operator()(int j, int d) const { return x[j][d]; }
+};
+}    // namespace
+
+void FixMLPTraction::apply()
+{
+  double **f = atom->f;
+  const Positions x = {atom->x};
+  const Rows<int> partners = {plan_partner.data(), MAXREF};
+  const Rows<double> refs = {plan_ref.data(), PLAN_REF};
+  const FixMLPFrame *frame = pair->lattice_frame();
+  const double *angles = frame ? frame->body_angles() : nullptr;
+  counts[0] = counts[1] = 0;
+  for (int m = 0; m < nplan; m++) {
+    const int i = plan_atom[m];
+    // (no frame: no turn to take the cosine of)
+    const double a = plan_body[m] < 0 ? 0.0 : angles[plan_body[m]];
+    const double ca = plan_body[m] < 0 ? 1.0 : cos(a), sa = plan_body[m] < 0 ? 0.0 : sin(a);
+    double fx, fy;
+    if (!MLPKernels::surface_force(x, partners, refs, m, i, ca, sa, fx, fy)) {
+      out[i][2] = out[i][3] = 0.0;
       counts[1]++;
       continue;
     }
-    const double a = frame ? frame->atom_angle(i) : 0.0;
-    double fx, fy;
-    MLPKernels::surface_compensation(F, cos(a), sin(a), sx, sy, fx, fy);
     f[i][0] += fx;
     f[i][1] += fy;
     out[i][2] = fx;
     out[i][3] = fy;
     counts[0]++;
   }
-}
-
-void FixMLPTraction::min_post_force(int vflag)
-{
-  post_force(vflag);
 }
 
 /* ----------------------------------------------------------------------

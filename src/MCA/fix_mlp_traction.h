@@ -22,6 +22,8 @@ FixStyle(mlp/traction,FixMLPTraction);
 
 #include "fix.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 /* ----------------------------------------------------------------------
@@ -33,7 +35,9 @@ namespace LAMMPS_NS {
    (mlp_kernels.h surface_compensation), A the least-squares displacement
    gradient over their neighbours, taken in the atom's lattice frame when
    the pair style has one.  The free surfaces then carry the tractions of
-   the isotropic medium of the lattice's wave moduli
+   the isotropic medium of the lattice's wave moduli.  After each
+   neighbour list build the surface atoms and the local indices of their
+   neighbours are listed once (the plan), which the step reads
 ------------------------------------------------------------------------- */
 
 class FixMLPTraction : public Fix {
@@ -45,6 +49,8 @@ class FixMLPTraction : public Fix {
   void init_list(int, class NeighList *) override;
   void setup(int) override;
   void min_setup(int) override;
+  void post_neighbor() override;
+  void min_post_neighbor() override;
   void post_force(int) override;
   void min_post_force(int) override;
   void write_restart(FILE *) override;
@@ -64,7 +70,7 @@ class FixMLPTraction : public Fix {
 
   static constexpr int MAXREF = 12;    // lattice neighbours an atom may keep
 
- private:
+ protected:
   class PairMLP *pair;
   class NeighList *list;
   int made;          // the reference is made (at the first setup or from a restart file)
@@ -74,7 +80,18 @@ class FixMLPTraction : public Fix {
   bigint counted;    // the step of counts_all
   double counts_all[2];
 
+  // the plan: the surface atoms of the group (S != 0) in this local numbering
+  static constexpr int PLAN_REF = 3 + 2 * MAXREF;    // S (2), count, X (2 per neighbour)
+  int nplan;
+  std::vector<int> plan_atom;       // local index
+  std::vector<int> plan_body;       // body in the lattice frame (-1: none)
+  std::vector<int> plan_partner;    // [m MAXREF + k]: the closest image of neighbour k
+  std::vector<double> plan_ref;     // [m PLAN_REF + ...]
+
   void make_reference();
+  virtual void build_plan();
+  // the forces of the plan's atoms (added to f, written to out)
+  virtual void apply();
   int record_size(int i) const { return 3 + 3 * static_cast<int>(ref[i][0]); }
 };
 

@@ -356,6 +356,35 @@ namespace MLPKernels {
     fy = sa * gx + ca * gy;
   }
 
+  // the compensating force of the surface atom i, entry m of a plan: the
+  // local indices of its lattice neighbours partner(m, k) (closest images),
+  // ref(m, .) = S (2), their count, then X_ij (2 per neighbour); x(j, d) the
+  // positions; (ca, sa) its frame's turn.  False: no gradient
+  template <class Positions, class Partners, class Refs>
+  MCA_INLINE bool surface_force(const Positions &x, const Partners &partner, const Refs &ref, int m,
+                                int i, double ca, double sa, double &fx, double &fy)
+  {
+    double B[4] = {0.0, 0.0, 0.0, 0.0}, C[4] = {0.0, 0.0, 0.0, 0.0}, F[4];
+    const double xi = x(i, 0), yi = x(i, 1);
+    const int count = static_cast<int>(ref(m, 2));
+    for (int k = 0; k < count; k++) {
+      const int j = partner(m, k);
+      const double dx = x(j, 0) - xi, dy = x(j, 1) - yi;
+      const double X = ref(m, 3 + 2 * k), Y = ref(m, 4 + 2 * k);
+      B[0] += dx * X;
+      B[1] += dx * Y;
+      B[2] += dy * X;
+      B[3] += dy * Y;
+      C[0] += X * X;
+      C[1] += X * Y;
+      C[3] += Y * Y;
+    }
+    C[2] = C[1];
+    if (!least_squares_gradient(B, C, F)) return false;
+    surface_compensation(F, ca, sa, ref(m, 0), ref(m, 1), fx, fy);
+    return true;
+  }
+
   // ... with the axes of the type pair (no lattice frame)
   MCA_INLINE MLPPairForce pair_force(const MLPCoeff &p, int return_style, double dx, double dy,
                                      double rsq, double factor)

@@ -17,7 +17,9 @@ A its least-squares displacement gradient (in its body's lattice frame):
   x: its Poisson ratio is the lattice's wave one (Eq. 11 corrected) with
   the fix and the static one without (both to 0.1 %; 1e-4 measured);
 * the same trajectory on 1, 2 and 4 ranks, with newton off, across a
-  restart file, and with pair mlp/kk (1 thread: bit for bit; 2: round-off).
+  restart file; fix mlp/traction/kk with pair mlp/kk: the strip's strain
+  and a framed patch's per-atom output as the CPU styles' (1 thread: bit
+  for bit; 2: round-off).
 """
 
 import math
@@ -129,6 +131,36 @@ def test_forces_turn_with_the_lattice_frame(build, tmp_path):
           f"the unturned ones turned to {error:.1e}")
     assert largest > 1e-4
     assert error < 1e-12
+
+
+def test_kokkos_frame_and_per_atom_output(tmp_path):
+    """mlp/traction/kk (with mlp/kk and the frame of the test above): the
+    per-atom surface vectors and forces of the CPU styles, on one thread
+    bit for bit, on two to round-off."""
+    kk = kokkos_build()
+    data_file(tmp_path / "patch.data", rotated_patch(0.0), ((-12, 12), (-12, 12)))
+    script = (patch_script("../patch.data", frame=True)
+              + "fix fr all mlp/frame 1\nfix tr all mlp/traction\nrun 0 post no\n"
+              + "variable ux atom 0.01*x\nvariable uy atom -0.004*y\n"
+              + "displace_atoms all move v_ux v_uy 0 units box\n"
+              + "displace_atoms all rotate 0 0 0 0 0 1 30\n")
+    columns = "fx fy f_tr[1] f_tr[2] f_tr[3] f_tr[4]"
+    results = {}
+    runs = [("cpu", ())] + [(t, kokkos_args(t)) for t in mcatest.kokkos_thread_counts()]
+    for name, args in runs:
+        d = tmp_path / str(name)
+        d.mkdir()
+        kk.run(dump_forces(script, columns), d, extra_args=args)
+        snap = read_dump(d / "forces.dump")[0]
+        results[name] = np.stack([snap[c] for c in columns.split()], axis=1)
+    scale = np.abs(results["cpu"][:, 4:]).max()
+    differences = {k: np.abs(v - results["cpu"]).max() for k, v in results.items()}
+    print(f"\nkk, frame: largest compensating force {scale:.3e}; differences from the CPU "
+          "styles: " + ", ".join(f"{k} {v:.1e}" for k, v in differences.items()))
+    assert scale > 1e-4
+    if 1 in results:
+        assert np.array_equal(results[1], results["cpu"])
+    assert differences[2] < 1e-13
 
 
 # a strip periodic along x, free at the top and bottom: the hexagonal
