@@ -34,6 +34,7 @@ using namespace MLPKernels;
 namespace {
 
 // the force kernel: one local atom per call, its whole neighbour list
+// (the passes of mlp_passes.h read the atoms and the list from its members)
 template <class DeviceType> struct MLPForceKernel {
   template <class DualViewType> using view = MCAKokkos::view_of<DualViewType, DeviceType>;
   view<decltype(AtomKokkos::k_x)> x;
@@ -52,47 +53,16 @@ template <class DeviceType> struct MLPForceKernel {
   template <int FRAME> KOKKOS_INLINE_FUNCTION void eval(const int ii, EV_FLOAT &ev) const
   {
     const int i = ilist(ii);
-    const double xi = x(i, 0), yi = x(i, 1);
-    const int row = type(i) * ntypes1;
-    double fx = 0.0, fy = 0.0, rx = 0.0, ry = 0.0, e = 0.0;
-    double v[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    const int jnum = numneigh(i);
-    for (int jj = 0; jj < jnum; jj++) {
-      int j = neighbors(i, jj);
-      const double factor = special_lj[(j >> SBBITS) & 3];
-      j &= NEIGHMASK;
-      const double dx = xi - x(j, 0), dy = yi - x(j, 1);
-      const double rsq = dx * dx + dy * dy;
-      const MLPCoeff &p = coeff(row + type(j));
-      if (rsq >= p.cutsq) continue;
-      MLPPairForce out;
-      if (FRAME) {
-        double cos_nt, sin_nt;
-        turned_axes(p, half_turn(i, 0), half_turn(i, 1), half_turn(j, 0), half_turn(j, 1), cos_nt,
-                    sin_nt);
-        out = pair_force(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt);
-      } else {
-        out = pair_force(p, return_style, dx, dy, rsq, factor);
-      }
-      fx += out.fx;
-      fy += out.fy;
-      rx += out.rx;
-      ry += out.ry;
-      // the atom's half of the pair's energy and virial (ev_tally_xyz_full)
-      e += 0.5 * out.energy;
-      v[0] += 0.5 * dx * out.fx;
-      v[1] += 0.5 * dy * out.fy;
-      v[3] += 0.5 * dx * out.fy;
-    }
-    f(i, 0) += fx;
-    f(i, 1) += fy;
-    if (eflag_global) ev.evdwl += e;
-    if (eflag_atom) eatom(i) += e;
+    const MLPAtomSums s = atom_forces<FRAME>(*this, i);
+    f(i, 0) += s.fx;
+    f(i, 1) += s.fy;
+    if (eflag_global) ev.evdwl += s.energy;
+    if (eflag_atom) eatom(i) += s.energy;
     if (vflag_global)
-      for (int k = 0; k < 6; k++) ev.v[k] += v[k];
+      for (int k = 0; k < 6; k++) ev.v[k] += s.v[k];
     if (vflag_atom)
-      for (int k = 0; k < 6; k++) vatom(i, k) += v[k];
-    if (freturn_flag) freturn(i) = sqrt(rx * rx + ry * ry);
+      for (int k = 0; k < 6; k++) vatom(i, k) += s.v[k];
+    if (freturn_flag) freturn(i) = sqrt(s.rx * s.rx + s.ry * s.ry);
   }
 };
 
@@ -128,27 +98,7 @@ template <class DeviceType, int FRAME> struct MLPRowBoundKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int ii, bigint &pairs) const
   {
     const int i = ilist(ii);
-    const int row = type(i) * ntypes1;
-    MLPRowSums sums;
-    gershgorin_clear(sums);
-    const int jnum = numneigh(i);
-    for (int jj = 0; jj < jnum; jj++) {
-      int j = neighbors(i, jj);
-      const double factor = special_lj[(j >> SBBITS) & 3];
-      j &= NEIGHMASK;
-      const double dx = x(i, 0) - x(j, 0), dy = x(i, 1) - x(j, 1);
-      const double rsq = dx * dx + dy * dy;
-      const MLPCoeff &p = coeff(row + type(j));
-      if (rsq >= p.cutsq || factor == 0.0) continue;
-      double cos_nt = p.cos_nt0, sin_nt = p.sin_nt0, jac[4];
-      if (FRAME)
-        turned_axes(p, half_turn(i, 0), half_turn(i, 1), half_turn(j, 0), half_turn(j, 1), cos_nt,
-                    sin_nt);
-      pair_jacobian(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt, jac);
-      gershgorin_add(jac, 1.0 / sqrt(mass_of(j)), sums);
-      pairs++;
-    }
-    bound(i) = gershgorin_bound(sums, mass_of(i));
+    bound(i) = atom_row_bound<FRAME>(*this, i, pairs);
   }
 };
 

@@ -25,6 +25,7 @@
 #include "mca_compat.h"
 #include "mca_largest_row.h"
 #include "memory.h"
+#include "mlp_passes.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
@@ -326,51 +327,47 @@ void PairMLP::frame_half_turns()
 
 template <int FRAME> void PairMLP::eval()
 {
-  double **x = atom->x;
+  const HostAtoms a = host_atoms();
   double **f = atom->f;
-  const int *type = atom->type;
-  const double *special_lj = force->special_lj;
-  const int ntypes1 = atom->ntypes + 1;
-  const MLPCoeff *table = coeff_table.data();
-
   const int inum = list->inum;
   const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const double xi = x[i][0], yi = x[i][1];
-    const MLPCoeff *row = table + type[i] * ntypes1;
-    const int *jlist = firstneigh[i];
-    double fx = 0.0, fy = 0.0, rx = 0.0, ry = 0.0;
-    for (int jj = 0; jj < numneigh[i]; jj++) {
-      int j = jlist[jj];
-      const double factor = special_lj[sbmask(j)];
-      j &= NEIGHMASK;
-      const double dx = xi - x[j][0], dy = yi - x[j][1];
-      const double rsq = dx * dx + dy * dy;
-      const MLPCoeff &p = row[type[j]];
-      if (rsq >= p.cutsq) continue;
-      MLPPairForce out;
-      if (FRAME) {
-        double cos_nt, sin_nt;
-        turned_axes(p, half_turn[2 * i], half_turn[2 * i + 1], half_turn[2 * j],
-                    half_turn[2 * j + 1], cos_nt, sin_nt);
-        out = pair_force(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt);
-      } else {
-        out = pair_force(p, return_style, dx, dy, rsq, factor);
-      }
-      fx += out.fx;
-      fy += out.fy;
-      rx += out.rx;
-      ry += out.ry;
-      if (evflag) ev_tally_xyz_full(i, out.energy, 0.0, out.fx, out.fy, 0.0, dx, dy, 0.0);
-    }
-    f[i][0] += fx;
-    f[i][1] += fy;
-    if (freturn_flag) freturn[i] = sqrt(rx * rx + ry * ry);
+    const MLPAtomSums s = atom_forces<FRAME>(a, i);
+    f[i][0] += s.fx;
+    f[i][1] += s.fy;
+    if (freturn_flag) freturn[i] = sqrt(s.rx * s.rx + s.ry * s.ry);
+    if (evflag) tally_atom(i, s);
   }
+}
+
+// an atom's half of its pairs' energy and virial (ev_tally_xyz_full's
+// sums, made per atom first, as mlp/kk does)
+void PairMLP::tally_atom(int i, const MLPAtomSums &s)
+{
+  if (eflag_global) eng_vdwl += s.energy;
+  if (eflag_atom) eatom[i] += s.energy;
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += s.v[k];
+  if (vflag_atom)
+    for (int k = 0; k < 6; k++) vatom[i][k] += s.v[k];
+}
+
+PairMLP::HostAtoms PairMLP::host_atoms() const
+{
+  HostAtoms a;
+  a.xp = atom->x;
+  a.typep = atom->type;
+  a.rmass = atom->rmass;
+  a.mass = atom->mass;
+  a.table = coeff_table.data();
+  a.numneighp = list->numneigh;
+  a.firstneigh = list->firstneigh;
+  a.special_lj = force->special_lj;
+  a.turn = half_turn.data();
+  a.ntypes1 = atom->ntypes + 1;
+  a.return_style = return_style;
+  return a;
 }
 
 /* ----------------------------------------------------------------------
@@ -380,47 +377,14 @@ template <int FRAME> void PairMLP::eval()
    present positions and lattice axes (a frame's body angles held)
 ------------------------------------------------------------------------- */
 
-double PairMLP::mass_of(int i) const
-{
-  return atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
-}
-
 template <int FRAME> bigint PairMLP::row_bounds(std::vector<double> &bound)
 {
-  double **x = atom->x;
-  const int *type = atom->type;
-  const double *special_lj = force->special_lj;
-  const int ntypes1 = atom->ntypes + 1;
-  const MLPCoeff *table = coeff_table.data();
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
+  const HostAtoms a = host_atoms();
   bigint pairs = 0;
   bound.assign(atom->nlocal, 0.0);
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const MLPCoeff *row = table + type[i] * ntypes1;
-    const int *jlist = firstneigh[i];
-    MLPRowSums sums;
-    gershgorin_clear(sums);
-    for (int jj = 0; jj < numneigh[i]; jj++) {
-      int j = jlist[jj];
-      const double factor = special_lj[sbmask(j)];
-      j &= NEIGHMASK;
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1];
-      const double rsq = dx * dx + dy * dy;
-      const MLPCoeff &p = row[type[j]];
-      if (rsq >= p.cutsq || factor == 0.0) continue;
-      double cos_nt = p.cos_nt0, sin_nt = p.sin_nt0, jac[4];
-      if (FRAME)
-        turned_axes(p, half_turn[2 * i], half_turn[2 * i + 1], half_turn[2 * j],
-                    half_turn[2 * j + 1], cos_nt, sin_nt);
-      pair_jacobian(p, return_style, dx, dy, rsq, factor, cos_nt, sin_nt, jac);
-      gershgorin_add(jac, 1.0 / sqrt(mass_of(j)), sums);
-      pairs++;
-    }
-    bound[i] = gershgorin_bound(sums, mass_of(i));
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    bound[i] = atom_row_bound<FRAME>(a, i, pairs);
   }
   return pairs;
 }

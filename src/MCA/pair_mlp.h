@@ -21,7 +21,7 @@ PairStyle(mlp,PairMLP);
 #define LMP_PAIR_MLP_H
 
 #include "mca_compat.h"
-#include "mlp_kernels.h"
+#include "mlp_passes.h"
 #include "pair.h"
 
 #include <string>
@@ -99,11 +99,31 @@ class PairMLP : public Pair {
   void frame_half_turns();
 
   // the bound of omega^2 of each local atom's rows -> the estimate
-  double mass_of(int i) const;
   StableStep reduce_stable_timestep(const double *bound, bigint pairs_twice);
   void check_stable_timestep();
 
  private:
+  // the atoms and the list as the passes read them (mlp_passes.h)
+  struct HostAtoms {
+    double **xp;
+    const int *typep;
+    const double *rmass, *mass;
+    const MLPKernels::MLPCoeff *table;
+    const int *numneighp;
+    int **firstneigh;
+    const double *special_lj;
+    const double *turn;    // half_turn
+    int ntypes1, return_style;
+    double x(int i, int k) const { return xp[i][k]; }
+    int type(int i) const { return typep[i]; }
+    const MLPKernels::MLPCoeff &coeff(int k) const { return table[k]; }
+    int numneigh(int i) const { return numneighp[i]; }
+    int neighbors(int i, int jj) const { return firstneigh[i][jj]; }
+    double half_turn(int i, int k) const { return turn[2 * i + k]; }
+    double mass_of(int i) const { return rmass ? rmass[i] : mass[typep[i]]; }
+  };
+  HostAtoms host_atoms() const;
+  void tally_atom(int i, const MLPKernels::MLPAtomSums &);
   template <int FRAME> void eval();
   template <int FRAME> bigint row_bounds(std::vector<double> &bound);
 };
