@@ -56,6 +56,9 @@ SCENES = {  # name: (input under examples/, variables)
     "fracture_box": ("fracture/in.box", {"srate": 7.0e9}),  # breaks from step ~30 on
     "damping": ("damping/in.damping", {"n": 4}),
     "notched_plate": ("hard_cases/in.notched_plate", {"nx": 12, "ny": 12}),
+    # contacts that heal into links under pressure during the press (its
+    # 1500 steps whole), then the pull (cut to nsteps)
+    "weld": ("healing/in.weld", {"heal": 3.5e6}),
 }
 MODES = {  # name: (MPI ranks, OpenMP threads, Kokkos)
     "cpu": (1, 1, False), "cpu2": (2, 1, False), "kk1": (1, 1, True), "kk2": (1, 2, True)}

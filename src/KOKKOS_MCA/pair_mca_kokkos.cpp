@@ -503,10 +503,13 @@ void PairMCAKokkos<DeviceType>::change_links(bool commit, bool lazy, int nhealed
       healed.heal_step = flags.step;
       Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), healed);
     }
-    MCAHealPass<DeviceType> pass;
-    pass.d = d;
-    pass.flags = flags;
-    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass);
+    // (without a work criterion the contact pass marked them)
+    if (heal_reads_epsp()) {
+      MCAHealPass<DeviceType> pass;
+      pass.d = d;
+      pass.flags = flags;
+      Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass);
+    }
   }
   if (!fractured() || (!links_broke && !links_healed && commit)) return;
   MCADamagePass<DeviceType> damage;

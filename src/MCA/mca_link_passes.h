@@ -185,6 +185,10 @@ namespace MCAKernels {
     double dt;       // time step, 0 in a setup (spins turn automata only in steps)
     double cutsq;    // square of the pair cutoff (links longer are counted)
     double step;     // the time step number (a broken pair's first step)
+    // healing with criteria of the contact pressure only: the contact pass
+    // marks the contacts that heal (the heal pass would read the same
+    // tractions: nothing changes a contact's row in between)
+    bool heal_in_pass;
   };
 
   // what the law reads of the automata lo and hi of a link (scratch: 12
@@ -373,6 +377,16 @@ namespace MCAKernels {
      thread count breaks the same links
   ------------------------------------------------------------------------- */
 
+  // mark a contact that meets its criterion (a link from the
+  // next step on: healing weld, below)
+  MCA_INLINE bool mark_heal(double *row, const MCALinkLayout &layout, const MCAContactRule &rule,
+                            double w_lo, double w_hi, double step)
+  {
+    if (!heals(row, rule, w_lo, w_hi)) return false;
+    row[layout.link_offset[PART_HEALING] + HL_STEP] = step + 1.0;
+    return true;
+  }
+
   // pairs that push (State: the broken pairs, or the contacts of the
   // contact part, mca_contact.h): the same ownership rule and sums as the
   // link pass; a force (and, with friction, torques), no traction moment:
@@ -403,11 +417,13 @@ namespace MCAKernels {
       MCALinkForces out;
       const MCAMaterial &m_lo = d.material(d.type(lo)), &m_hi = d.material(d.type(hi));
       if (State == LINK_CONTACT) {
+        const MCAContactRule &rule = d.contact_rule(d.type(lo), d.type(hi));
         if (p.commit && heal_pending(h, d.layout, p.step)) {
           heal_contact(h, e, out);
           totals.nhealed++;
         } else {
-          contact_pair(h, e, m_lo, m_hi, d.contact_rule(d.type(lo), d.type(hi)).mu, out);
+          contact_pair(h, e, m_lo, m_hi, rule.mu, out);
+          if (p.heal_in_pass) mark_heal(h, d.layout, rule, 0.0, 0.0, p.step);
         }
       } else {
         const bool first = p.commit && h[ff + F_STEP] == p.step - 1.0;
@@ -522,13 +538,16 @@ namespace MCAKernels {
      pass of the next step makes them links (heal_contact); then each
      automaton takes what its healed contacts left into its law state
      (healed_of).  The plastic work density reads the plastic strain of
-     the automata of this step (sent to the ghosts)
+     the automata of this step (sent to the ghosts).  Without a work
+     criterion the contact pass itself marks them (heal_in_pass), which
+     saves a sweep over the rows
   ------------------------------------------------------------------------- */
 
+  // (with a plastic work criterion; without, the contact pass marks them:
+  // MCALinkPassFlags::heal_in_pass)
   template <class D> MCA_FUNCTION void heal_pass_of(const D &d, const MCABreakFlags &p, int i)
   {
     const bool plastic = d.layout.link_offset[PART_PLASTICITY] >= 0;
-    const int healing = d.layout.link_offset[PART_HEALING];
     for (int m = 0; m < d.nlinks(i); m++) {
       double *row;
       int j;
@@ -542,9 +561,7 @@ namespace MCAKernels {
         w_lo = plastic_work_density(d.hardening(type_lo), d.epsp(lo));
         w_hi = plastic_work_density(d.hardening(type_hi), d.epsp(hi));
       }
-      if (!heals(row, rule, w_lo, w_hi)) continue;
-      // (a link from the next step on)
-      row[healing + HL_STEP] = p.step + 1.0;
+      if (!mark_heal(row, d.layout, rule, w_lo, w_hi, p.step)) continue;
       if (j < d.nlocal && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
     }
   }

@@ -1086,12 +1086,14 @@ void PairMCA::compute(int eflag, int vflag)
   }
   // healing: the contacts marked at the last step became links in the
   // contact pass; what they held goes to their automata's law state.  The
-  // contacts that meet their criterion now are marked
+  // contacts that meet their criterion now are marked (by the contact pass
+  // itself when the criterion reads no plastic work)
   if (healing() && p.commit) {
     note_heals(totals.nhealed);
     if (links_healed)
       for (int i = 0; i < d.nlocal; i++) healed_of(d, i, b.step);
-    for (int i = 0; i < d.nlocal; i++) heal_pass_of(d, b, i);
+    if (!p.heal_in_pass)
+      for (int i = 0; i < d.nlocal; i++) heal_pass_of(d, b, i);
   }
   if (fractured()) {
     if (links_broke || links_healed || !p.commit) {
@@ -1263,6 +1265,7 @@ MCALinkPassFlags PairMCA::link_pass_flags(bool commit, bool eager) const
   p.dt = commit ? update->dt : 0.0;
   p.cutsq = cut_global * cut_global;
   p.step = static_cast<double>(update->ntimestep);
+  p.heal_in_pass = commit && healing() && !heal_reads_epsp();
   return p;
 }
 
