@@ -43,7 +43,7 @@ FixMCALinksKokkos::FixMCALinksKokkos(LAMMPS *lmp, int narg, char **arg) :
   // calls do not reach this class there): redo it in DualViews
   memory->destroy(nlinks);
   memory->destroy(partner);
-  memory->destroy(history);
+  memory->destroy(slot);
   memory->destroy(atom_state);
   const int capacity = maxlinks;
   maxlinks = 0;
@@ -57,18 +57,28 @@ FixMCALinksKokkos::~FixMCALinksKokkos()
   // the base destructor then finds null pointers
   memoryKK->destroy_kokkos(k_nlinks, nlinks);
   memoryKK->destroy_kokkos(k_partner, partner);
-  memoryKK->destroy_kokkos(k_history, history);
+  memoryKK->destroy_kokkos(k_slot, slot);
+  memoryKK->destroy_kokkos(k_rows, rows);
   memoryKK->destroy_kokkos(k_atom_state, atom_state);
 }
 
 /* ---------------------------------------------------------------------- */
 
-void FixMCALinksKokkos::allocate_rows(int nmax)
+void FixMCALinksKokkos::allocate_links(int nmax)
 {
   memoryKK->destroy_kokkos(k_partner, partner);
-  memoryKK->destroy_kokkos(k_history, history);
+  memoryKK->destroy_kokkos(k_slot, slot);
   memoryKK->create_kokkos(k_partner, partner, nmax, maxlinks, "mca/links:partner");
-  memoryKK->create_kokkos(k_history, history, nmax, maxlinks * row_size, "mca/links:history");
+  memoryKK->create_kokkos(k_slot, slot, nmax, maxlinks, "mca/links:slot");
+}
+
+// (on the host: the rows are added there)
+void FixMCALinksKokkos::grow_pool(int n)
+{
+  to_host();
+  memoryKK->grow_kokkos(k_rows, rows, n, row_size, "mca/links:rows");
+  maxrows = n;
+  host_changed();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -78,7 +88,7 @@ void FixMCALinksKokkos::grow_arrays(int nmax)
   to_host();
   memoryKK->grow_kokkos(k_nlinks, nlinks, nmax, "mca/links:nlinks");
   memoryKK->grow_kokkos(k_partner, partner, nmax, maxlinks, "mca/links:partner");
-  memoryKK->grow_kokkos(k_history, history, nmax, maxlinks * row_size, "mca/links:history");
+  memoryKK->grow_kokkos(k_slot, slot, nmax, maxlinks, "mca/links:slot");
   memoryKK->grow_kokkos(k_atom_state, atom_state, nmax, atom_size, "mca/links:atom_state");
   host_changed();
 }
@@ -89,7 +99,8 @@ void FixMCALinksKokkos::to_host()
 {
   k_nlinks.sync_host();
   k_partner.sync_host();
-  k_history.sync_host();
+  k_slot.sync_host();
+  k_rows.sync_host();
   k_atom_state.sync_host();
 }
 
@@ -97,7 +108,8 @@ void FixMCALinksKokkos::host_changed()
 {
   k_nlinks.modify_host();
   k_partner.modify_host();
-  k_history.modify_host();
+  k_slot.modify_host();
+  k_rows.modify_host();
   k_atom_state.modify_host();
 }
 
@@ -105,13 +117,14 @@ void FixMCALinksKokkos::to_device()
 {
   k_nlinks.sync_device();
   k_partner.sync_device();
-  k_history.sync_device();
+  k_slot.sync_device();
+  k_rows.sync_device();
   k_atom_state.sync_device();
 }
 
-// the pair style changes only the history and the law state
+// the pair style changes only the rows and the law state
 void FixMCALinksKokkos::device_changed()
 {
-  k_history.modify_device();
+  k_rows.modify_device();
   k_atom_state.modify_device();
 }

@@ -49,11 +49,13 @@ class FixMCALinksKokkos : public FixMCALinks {
 
   MCAKokkos::dual_int_1d k_nlinks;
   MCAKokkos::dual_tagint_2d k_partner;
-  MCAKokkos::dual_double_2d k_history;
+  MCAKokkos::dual_int_2d k_slot;
+  MCAKokkos::dual_double_2d k_rows;
   MCAKokkos::dual_double_2d k_atom_state;
 
  protected:
-  void allocate_rows(int nmax) override;
+  void allocate_links(int nmax) override;
+  void grow_pool(int n) override;
 };
 
 }    // namespace LAMMPS_NS

@@ -167,11 +167,11 @@ template <class DeviceType> MCAPairViews<DeviceType> PairMCAKokkos<DeviceType>::
   d.seq = avecKK->k_seq.template view<DeviceType>();
   d.eeq = avecKK->k_eeq.template view<DeviceType>();
   d.nlinks = linksKK->k_nlinks.template view<DeviceType>();
-  d.history = linksKK->k_history.template view<DeviceType>();
+  d.slot = linksKK->k_slot.template view<DeviceType>();
+  d.rows = linksKK->k_rows.template view<DeviceType>();
   d.atom_state = linksKK->k_atom_state.template view<DeviceType>();
   d.layout = model.layout();
   d.partner = k_partner_cache.template view<DeviceType>();
-  d.row = k_row_cache.template view<DeviceType>();
   d.pred_stiffness = k_pred_stiffness.template view<DeviceType>();
   d.dsmean = k_dsmean.template view<DeviceType>();
   d.smean_pred = k_smean_pred.template view<DeviceType>();
@@ -394,11 +394,10 @@ template <class DeviceType> int PairMCAKokkos<DeviceType>::chunks() const
 
 template <class DeviceType>
 template <class Pass>
-void PairMCAKokkos<DeviceType>::run_link_kernel(Pass &pass, bool commit, bool lazy,
-                                                MCALinkSums &sums)
+void PairMCAKokkos<DeviceType>::run_link_kernel(Pass &pass, bool commit, MCALinkSums &sums)
 {
   pass.d = views();
-  pass.flags = link_pass_flags(commit, !lazy);
+  pass.flags = link_pass_flags(commit);
   pass.tally.eflag_global = eflag_global;
   pass.tally.vflag_global = vflag_global;
   pass.tally.eflag_atom = eflag_atom;
@@ -419,7 +418,7 @@ void PairMCAKokkos<DeviceType>::run_link_kernel(Pass &pass, bool commit, bool la
 
 template <class DeviceType>
 template <template <class, class, class> class Pass>
-void PairMCAKokkos<DeviceType>::link_kernel(bool commit, bool lazy, MCALinkSums &sums)
+void PairMCAKokkos<DeviceType>::link_kernel(bool commit, MCALinkSums &sums)
 {
   const bool atom_tally = eflag_atom || vflag_atom;
   if (need_dup()) {
@@ -429,13 +428,13 @@ void PairMCAKokkos<DeviceType>::link_kernel(bool commit, bool lazy, MCALinkSums 
     pass.sums.copies = d_link_copies;
     pass.sums.chunk_size = chunk_size;
     pass.tally.tally = dup_tally;
-    run_link_kernel(pass, commit, lazy, sums);
+    run_link_kernel(pass, commit, sums);
     if (atom_tally) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
   } else {
     Pass<DeviceType, MCADirectSums<DeviceType>, direct_type> pass;
     pass.sums.sums = direct_type(d_link_sums);
     pass.tally.tally = direct_type(d_atom_tally);
-    run_link_kernel(pass, commit, lazy, sums);
+    run_link_kernel(pass, commit, sums);
   }
 }
 
@@ -449,7 +448,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool 
 {
   const int nlocal = atom->nlocal;
   const MCAPairViews<DeviceType> d = views();
-  const MCALinkPassFlags flags = link_pass_flags(commit, false);
+  const MCALinkPassFlags flags = link_pass_flags(commit);
   if (need_dup()) {
     MCAChunkedFor<MCATrialPass<DeviceType, MCAChunkSums<DeviceType>>> chunked;
     chunked.pass.d = d;
@@ -480,12 +479,11 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool 
    break, the contacts that heal and the damage (see PairMCA::compute())
 ------------------------------------------------------------------------- */
 
-template <class DeviceType>
-void PairMCAKokkos<DeviceType>::change_links(bool commit, bool lazy, int nhealed)
+template <class DeviceType> void PairMCAKokkos<DeviceType>::change_links(bool commit, int nhealed)
 {
   const int nlocal = atom->nlocal;
   const MCAPairViews<DeviceType> d = views();
-  const MCABreakFlags flags = break_flags(!lazy);
+  const MCABreakFlags flags = break_flags();
   if (commit && (fractured() || heal_reads_epsp())) forward_comm_stage(STAGE_BREAK);
   if (commit && fractured()) {
     MCAFracturePass<DeviceType> pass;
@@ -551,9 +549,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
     refresh_partners();
     linksKK->to_device();
     k_partner_cache.modify_host();
-    k_row_cache.modify_host();
     k_partner_cache.template sync<DeviceType>();
-    k_row_cache.template sync<DeviceType>();
     count_links_kk();
     // (the host copies of the table are current here)
     check_stable_timestep(update->setupflag ? ESTIMATE_SETUP : ESTIMATE_RENEIGHBOR);
@@ -564,7 +560,6 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   links_broke = links_healed = 0;
 
   const bool commit = (update->setupflag == 0);
-  const bool lazy = links->lazy_rows && links->row_sync == this;
 
   predict_mean_stress();
 
@@ -574,17 +569,17 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   const MCAPairViews<DeviceType> d = views();
   MCALinkSums sums;
   if (!plastic()) {
-    link_kernel<MCALinkPassOf<LAW_ELASTIC>::template type>(commit, lazy, sums);
+    link_kernel<MCALinkPassOf<LAW_ELASTIC>::template type>(commit, sums);
   } else if (commit) {
     plastic_return(commit);
-    link_kernel<MCALinkPassOf<LAW_PLASTIC>::template type>(commit, lazy, sums);
+    link_kernel<MCALinkPassOf<LAW_PLASTIC>::template type>(commit, sums);
   } else {
     // a setup returns no automaton (see PairMCA::compute())
-    link_kernel<MCALinkPassOf<LAW_PLASTIC_SETUP>::template type>(commit, lazy, sums);
+    link_kernel<MCALinkPassOf<LAW_PLASTIC_SETUP>::template type>(commit, sums);
   }
   // broken pairs: their compressive force (and friction) only
-  if (fractured()) link_kernel<MCAPushingPassOf<LINK_BROKEN>::template type>(commit, lazy, sums);
-  if (contacts()) link_kernel<MCAPushingPassOf<LINK_CONTACT>::template type>(commit, lazy, sums);
+  if (fractured()) link_kernel<MCAPushingPassOf<LINK_BROKEN>::template type>(commit, sums);
+  if (contacts()) link_kernel<MCAPushingPassOf<LINK_CONTACT>::template type>(commit, sums);
 
   MCALinkFinish<DeviceType> finish;
   finish.d = d;
@@ -593,10 +588,9 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   finish.eflag_atom = eflag_atom;
   finish.vflag_atom = vflag_atom;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), finish);
-  if (fractured() || healing()) change_links(commit, lazy, sums.nhealed);
+  if (fractured() || healing()) change_links(commit, sums.nhealed);
 
   linksKK->device_changed();
-  if (commit && lazy) partner_rows_stale = 1;
 
   if (eflag_global) eng_vdwl += sums.energy;
   if (vflag_global)
@@ -625,21 +619,6 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::estimate_forward_com
   execution_space = Host;
   PairMCA::estimate_forward_comm();
   execution_space = space;
-}
-
-/* ----------------------------------------------------------------------
-   partner copies of the local links (see PairMCA::sync_link_rows())
-------------------------------------------------------------------------- */
-
-template <class DeviceType> void PairMCAKokkos<DeviceType>::sync_link_rows()
-{
-  if (!rows_to_sync()) return;
-  linksKK->to_device();
-  MCASyncRows<DeviceType> rows;
-  rows.d = views();
-  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), rows);
-  linksKK->device_changed();
-  partner_rows_stale = 0;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -79,7 +79,6 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   void compute(int, int) override;
   void init_style() override;
   void predict_mean_stress() override;
-  void sync_link_rows() override;
 
   int pack_forward_comm_kokkos(MCA_KK_PACK_FORWARD_ARGS) override;
   void unpack_forward_comm_kokkos(int, int, MCA_KK_COMM_BUFFER &) override;
@@ -119,13 +118,13 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   dup_type dup_tally;
   bool need_dup() const;
   int chunks() const;
-  template <class Pass> void run_link_kernel(Pass &, bool commit, bool lazy, struct MCALinkSums &);
+  template <class Pass> void run_link_kernel(Pass &, bool commit, struct MCALinkSums &);
   // a kernel over the links with the link sums: Pass<DeviceType, Sums, TallyScatter>
   template <template <class, class, class> class Pass>
-  void link_kernel(bool commit, bool lazy, struct MCALinkSums &);
+  void link_kernel(bool commit, struct MCALinkSums &);
   void plastic_return(bool commit);
   // (nhealed: contacts that became links in this step's contact pass)
-  void change_links(bool commit, bool lazy, int nhealed);
+  void change_links(bool commit, int nhealed);
   // the per-atom values a stage communicates: a, b (or none), the columns
   // of c (or none)
   void stage_views(int stage, MCAKokkos::dual_double_1d *&a, MCAKokkos::dual_double_1d *&b,

@@ -56,8 +56,8 @@ template <class DeviceType> struct MCAPairViews {
   double_1d smean, seq, eeq;
 
   int_1d nlinks;
-  double_2d history, atom_state;
-  int_2d partner, row;
+  int_2d slot, partner;    // each link's row in the pool, its partner's local or ghost index
+  double_2d rows, atom_state;
   MCALinkLayout layout;
 
   double_1d pred_stiffness, dsmean, smean_pred;
@@ -79,11 +79,6 @@ template <class DeviceType> struct MCAPairViews {
 
   int nlocal;
 
-  // the link pass reads a row's state before the ownership test where the
-  // memory is the host's (see mca_link_passes.h)
-  static constexpr bool row_state_first =
-      Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename DeviceType::memory_space>::accessible;
-
   // a row of x or omega as 3 contiguous doubles (the views' layout may be
   // LayoutLeft on a device)
   template <class View>
@@ -101,10 +96,7 @@ template <class DeviceType> struct MCAPairViews {
     return copy_row(omega, i, scratch);
   }
 
-  KOKKOS_INLINE_FUNCTION double *history_row(int i, int m) const
-  {
-    return &history(i, m * layout.row_size);
-  }
+  KOKKOS_INLINE_FUNCTION double *history_row(int i, int m) const { return &rows(slot(i, m), 0); }
   KOKKOS_INLINE_FUNCTION const MCABreakRule &break_rule(int ti, int tj) const
   {
     return break_rules(ti * break_stride + tj);
@@ -515,17 +507,6 @@ template <class DeviceType> struct MCALinkFinish {
     if (vflag_atom)
       for (int k = 0; k < 6; k++) d.vatom(i, k) += d.atom_tally(i, AT_VIRIAL + k);
   }
-};
-
-/* ----------------------------------------------------------------------
-   kernel: copy the current row of each local link to the partner's row
-------------------------------------------------------------------------- */
-
-template <class DeviceType> struct MCASyncRows {
-  typedef DeviceType device_type;
-  MCAPairViews<DeviceType> d;
-
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { sync_rows_of(d, i); }
 };
 
 /* ----------------------------------------------------------------------

@@ -134,7 +134,7 @@ double ComputeMCAAtom::value(int i, int w)
     if (w == CONTACT_WORK) return 0.5 * links->atom_state[i][ca + MCAKernels::CA_WORK];
     double sum = links->atom_state[i][ca + MCAKernels::CA_FRICTION];
     for (int m = 0; m < links->nlinks[i]; m++)
-      sum += MCAKernels::link_friction_work(&links->history[i][m * links->row_size], layout);
+      sum += MCAKernels::link_friction_work(links->row(i, m), layout);
     return 0.5 * sum;
   }
   // links: linked partners of the automaton; contacts: the partners it
@@ -142,7 +142,7 @@ double ComputeMCAAtom::value(int i, int w)
   const int state = (w == CONTACTS) ? MCAKernels::LINK_CONTACT : MCAKernels::LINK_LINKED;
   int n = 0;
   for (int m = 0; m < links->nlinks[i]; m++) {
-    const double *row = &links->history[i][m * links->row_size];
+    const double *row = links->row(i, m);
     if (static_cast<int>(row[MCAKernels::H_STATE]) != state) continue;
     if (w == CONTACTS &&
         !(row[MCAKernels::H_LO + MCAKernels::HALF_SIG] +
@@ -172,10 +172,8 @@ void ComputeMCAAtom::compute_peratom()
     }
   }
 
-  // the values of the last force evaluation (on a device for kk styles);
-  // the link states of the partner copies too (links break)
+  // the values of the last force evaluation (on a device for kk styles)
   avec->sync_host();
-  links->sync_rows();
   links->to_host();
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;

@@ -68,14 +68,13 @@ void ComputeMCAFracture::init()
 }
 
 /* ----------------------------------------------------------------------
-   each link is counted by both of its automata (their two copies of its
-   row, or what they kept of a forgotten link), so the sums are halved
+   each link is counted by both of its automata (its row, or what they
+   kept of a forgotten link), so the sums are halved
 ------------------------------------------------------------------------- */
 
 void ComputeMCAFracture::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  links->sync_rows();
   links->to_host();
   const int ff = links->model.layout().link_offset[PART_FRACTURE];
   const int fa = links->model.layout().atom_offset[PART_FRACTURE];
@@ -83,7 +82,7 @@ void ComputeMCAFracture::compute_vector()
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     for (int m = 0; m < links->nlinks[i]; m++) {
-      const double *row = &links->history[i][m * links->row_size];
+      const double *row = links->row(i, m);
       if (!broken(row)) continue;
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
       if (cause > BREAK_NONE && cause < NBREAK) local[cause] += 1.0;

@@ -152,14 +152,14 @@ void ComputeMCALink::compute_local()
   // friction: broken pairs and contacts rub (a broken pair from its first
   // step on: until then its row holds the link's shear tractions)
   const bool friction = links->model.layout().link_offset[PART_CONTACT] >= 0;
-  // the rows of the lower IDs are current (links break in them)
+  // each link once: from its lower ID
   int row = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     for (int m = 0; m < links->nlinks[i]; m++) {
       const tagint other = links->partner[i][m];
       if (tag[i] >= other) continue;
-      const double *h = &links->history[i][m * links->row_size];
+      const double *h = links->row(i, m);
       int j = atom->map(other);
       if (j < 0)
         error->one(FLERR,

@@ -41,8 +41,8 @@ static constexpr double NAMED_BLOCKS = -1.0;
 ------------------------------------------------------------------------- */
 
 FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), history(nullptr), atom_state(nullptr),
-    row_sync(nullptr), lazy_rows(0), list(nullptr)
+    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), slot(nullptr), rows(nullptr), nrows(0),
+    maxrows(0), atom_state(nullptr), list(nullptr)
 {
   if (narg < 6 || (narg - 3) % 3 != 0)
     error->all(FLERR,
@@ -78,7 +78,8 @@ FixMCALinks::~FixMCALinks()
 
   memory->destroy(nlinks);
   memory->destroy(partner);
-  memory->destroy(history);
+  memory->destroy(slot);
+  memory->destroy(rows);
   memory->destroy(atom_state);
 }
 
@@ -90,17 +91,12 @@ int FixMCALinks::setmask()
 }
 
 /* ----------------------------------------------------------------------
-   the links are made once, from an occasional full neighbor list.
-   Partner copies may be left behind during a run only if no fix acts at
-   pre-exchange before this one (e.g. fix balance, which moves atoms)
+   the links are made once, from an occasional full neighbor list
 ------------------------------------------------------------------------- */
 
 void FixMCALinks::init()
 {
   if (!created) MCACompat::request_full_occasional(neighbor, this, 0);
-  lazy_rows = 1;
-  for (int i = 0; i < modify->nfix && modify->fix[i] != this; i++)
-    if (modify->fmask[i] & (PRE_EXCHANGE | MIN_PRE_EXCHANGE)) lazy_rows = 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -109,7 +105,6 @@ void FixMCALinks::init()
 
 void FixMCALinks::pre_exchange()
 {
-  sync_rows();
   to_host();
   host_changed();    // by the exchange and sorting of atoms that follow
 }
@@ -121,7 +116,6 @@ void FixMCALinks::min_pre_exchange()
 
 void FixMCALinks::post_run()
 {
-  sync_rows();
   to_host();
 }
 
@@ -142,7 +136,8 @@ NeighList *FixMCALinks::build_full_list()
 }
 
 /* ----------------------------------------------------------------------
-   change the number of rows per atom, keeping the existing links
+   change the number of links per atom, keeping the existing links (the
+   pool of rows is not touched)
 ------------------------------------------------------------------------- */
 
 void FixMCALinks::set_capacity(int capacity)
@@ -151,19 +146,19 @@ void FixMCALinks::set_capacity(int capacity)
   to_host();
   const int nlocal = atom->nlocal;
 
-  // keep the links of the local atoms while the rows are reallocated
+  // keep the links of the local atoms while the tables are reallocated
   std::vector<tagint> kept_partner;
-  std::vector<double> kept_history;
+  std::vector<int> kept_slot;
   if (partner) {
     for (int i = 0; i < nlocal; i++) {
       if (nlinks[i] > capacity)
         error->one(FLERR, "Cannot reduce the link capacity of pair mca below {} links", nlinks[i]);
       kept_partner.insert(kept_partner.end(), partner[i], partner[i] + nlinks[i]);
-      kept_history.insert(kept_history.end(), history[i], history[i] + nlinks[i] * row_size);
+      kept_slot.insert(kept_slot.end(), slot[i], slot[i] + nlinks[i]);
     }
   }
   maxlinks = capacity;
-  allocate_rows(atom->nmax);
+  allocate_links(atom->nmax);
   if (!nlinks) {
     grow_arrays(atom->nmax);
     for (int i = 0; i < atom->nmax; i++) {
@@ -171,12 +166,11 @@ void FixMCALinks::set_capacity(int capacity)
       for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
     }
   }
-  size_t p = 0, h = 0;
+  size_t p = 0;
   for (int i = 0; i < nlocal && !kept_partner.empty(); i++) {
     std::copy(kept_partner.data() + p, kept_partner.data() + p + nlinks[i], partner[i]);
-    std::copy(kept_history.data() + h, kept_history.data() + h + nlinks[i] * row_size, history[i]);
+    std::copy(kept_slot.data() + p, kept_slot.data() + p + nlinks[i], slot[i]);
     p += nlinks[i];
-    h += nlinks[i] * row_size;
   }
   host_changed();
 
@@ -191,21 +185,128 @@ void FixMCALinks::remove_row(int i, int m)
   const int last = nlinks[i] - 1;
   if (m != last) {
     partner[i][m] = partner[i][last];
-    memcpy(&history[i][m * row_size], &history[i][last * row_size], row_size * sizeof(double));
+    slot[i][m] = slot[i][last];
   }
   nlinks[i] = last;
 }
 
 /* ----------------------------------------------------------------------
-   new, empty rows of maxlinks links for nmax atoms
+   new, empty tables of maxlinks links for nmax atoms
 ------------------------------------------------------------------------- */
 
-void FixMCALinks::allocate_rows(int nmax)
+void FixMCALinks::allocate_links(int nmax)
 {
   memory->destroy(partner);
-  memory->destroy(history);
+  memory->destroy(slot);
   memory->create(partner, nmax, maxlinks, "mca/links:partner");
-  memory->create(history, nmax, maxlinks * row_size, "mca/links:history");
+  memory->create(slot, nmax, maxlinks, "mca/links:slot");
+}
+
+// room for n rows in the pool, keeping those in use
+void FixMCALinks::grow_pool(int n)
+{
+  memory->grow(rows, n, row_size, "mca/links:rows");
+  maxrows = n;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double *FixMCALinks::new_row(int i, int m)
+{
+  if (nrows == maxrows) grow_pool(MAX(1024, nrows + nrows / 4));
+  slot[i][m] = nrows;
+  return rows[nrows++];
+}
+
+void FixMCALinks::reserve_rows(bigint n)
+{
+  if (n > MAXSMALLINT)
+    error->one(FLERR, "Fix MCA_LINKS: {} link rows on one processor are too many", n);
+  if (n > maxrows) grow_pool(static_cast<int>(n));
+}
+
+/* ----------------------------------------------------------------------
+   the pool after LAMMPS reneighbored: the row of each link that its end i
+   evaluates (partner_index[i][m] >= nlocal, or a local partner of higher
+   ID: the passes' ownership rule) is kept, at the place of that end in
+   the order of atoms and links, and a local partner's end shares it.  The
+   rows no end evaluates are dropped: a local partner's own copy of the
+   link (that of an atom that came from another processor or a restart
+   file, a contact row both ends made), the rows of atoms that left.  Two
+   ends that evaluate one row (a link between local automata whose closest
+   images became ghost atoms when the box remapped them) each get a copy.
+   The rows move in place, each once along its chain of places, so the
+   pool needs no second copy; when every row is at its place already,
+   nothing moves
+------------------------------------------------------------------------- */
+
+void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_index,
+                             int *const *partner_row)
+{
+  to_host();
+  auto evaluates = [&](int i, int m) {
+    const int j = partner_index[i][m];
+    return j >= nlocal || tag[i] < tag[j];
+  };
+
+  // a second end that evaluates a row takes a copy of it
+  std::vector<char> claimed(nrows, 0);
+  const int nold = nrows;
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < nlinks[i]; m++) {
+      if (!evaluates(i, m)) continue;
+      const int s = slot[i][m];
+      if (s < nold && claimed[s]) {
+        double *copy = new_row(i, m);
+        std::copy(rows[s], rows[s] + row_size, copy);
+      } else if (s < nold) {
+        claimed[s] = 1;
+      }
+    }
+
+  // the new place of each row that is kept (-1: dropped)
+  std::vector<int> place(nrows, -1);
+  int kept = 0;
+  bool in_place = true;
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < nlinks[i]; m++) {
+      if (!evaluates(i, m)) continue;
+      const int s = slot[i][m];
+      place[s] = kept;
+      if (s != kept) in_place = false;
+      kept++;
+    }
+
+  // move each kept row to its place: a chain ends at a place that is free
+  // (its row dropped or moved already)
+  if (!in_place) {
+    std::vector<char> moved(nrows, 0);
+    std::vector<double> carry(row_size);
+    for (int s = 0; s < nrows; s++) {
+      if (place[s] < 0 || moved[s]) continue;
+      moved[s] = 1;
+      if (place[s] == s) continue;
+      std::copy(rows[s], rows[s] + row_size, carry.data());
+      int at = place[s];
+      while (place[at] >= 0 && !moved[at]) {
+        std::swap_ranges(carry.begin(), carry.end(), rows[at]);
+        moved[at] = 1;
+        at = place[at];
+      }
+      std::copy(carry.begin(), carry.end(), rows[at]);
+    }
+    for (int i = 0; i < nlocal; i++)
+      for (int m = 0; m < nlinks[i]; m++)
+        if (evaluates(i, m)) slot[i][m] = place[slot[i][m]];
+  }
+  for (int i = 0; i < nlocal; i++)
+    for (int m = 0; m < nlinks[i]; m++)
+      if (!evaluates(i, m)) slot[i][m] = slot[partner_index[i][m]][partner_row[i][m]];
+  nrows = kept;
+  // (the rows of atoms that came with copies of both ends, or from a
+  // restart file, are given back)
+  if (maxrows > 2 * nrows + 1024) grow_pool(nrows + nrows / 4);
+  host_changed();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -214,8 +315,8 @@ double FixMCALinks::memory_usage()
 {
   const double nmax = atom->nmax;
   return nmax *
-      (sizeof(int) + maxlinks * (sizeof(tagint) + row_size * sizeof(double)) +
-       atom_size * sizeof(double));
+      (sizeof(int) + maxlinks * (sizeof(tagint) + sizeof(int)) + atom_size * sizeof(double)) +
+      (double) maxrows * row_size * sizeof(double);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -224,18 +325,22 @@ void FixMCALinks::grow_arrays(int nmax)
 {
   memory->grow(nlinks, nmax, "mca/links:nlinks");
   memory->grow(partner, nmax, maxlinks, "mca/links:partner");
-  memory->grow(history, nmax, maxlinks * row_size, "mca/links:history");
+  memory->grow(slot, nmax, maxlinks, "mca/links:slot");
   memory->grow(atom_state, nmax, atom_size, "mca/links:atom_state");
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   (the rows stay where they are: atom j takes atom i's)
+------------------------------------------------------------------------- */
 
 void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
 {
   to_host();
   nlinks[j] = nlinks[i];
-  for (int m = 0; m < nlinks[i]; m++) partner[j][m] = partner[i][m];
-  memcpy(history[j], history[i], nlinks[i] * row_size * sizeof(double));
+  for (int m = 0; m < nlinks[i]; m++) {
+    partner[j][m] = partner[i][m];
+    slot[j][m] = slot[i][m];
+  }
   for (int k = 0; k < atom_size; k++) atom_state[j][k] = atom_state[i][k];
   host_changed();
 }
@@ -252,7 +357,7 @@ int FixMCALinks::pack_exchange(int i, double *buf)
   for (int k = 0; k < atom_size; k++) buf[m++] = atom_state[i][k];
   for (int k = 0; k < nlinks[i]; k++) {
     buf[m++] = ubuf(partner[i][k]).d;
-    memcpy(&buf[m], &history[i][k * row_size], row_size * sizeof(double));
+    memcpy(&buf[m], row(i, k), row_size * sizeof(double));
     m += row_size;
   }
   return m;
@@ -268,7 +373,7 @@ int FixMCALinks::unpack_exchange(int nlocal, double *buf)
   for (int k = 0; k < atom_size; k++) atom_state[nlocal][k] = buf[m++];
   for (int k = 0; k < nlinks[nlocal]; k++) {
     partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
-    memcpy(&history[nlocal][k * row_size], &buf[m], row_size * sizeof(double));
+    memcpy(new_row(nlocal, k), &buf[m], row_size * sizeof(double));
     m += row_size;
   }
   host_changed();
@@ -284,8 +389,6 @@ int FixMCALinks::unpack_exchange(int nlocal, double *buf)
 
 void FixMCALinks::write_restart(FILE *fp)
 {
-  // every processor comes here before the per-atom records are packed
-  sync_rows();
   to_host();
   if (comm->me == 0) {
     std::vector<double> list = {NAMED_BLOCKS, (double) maxlinks, (double) created,

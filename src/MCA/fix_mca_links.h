@@ -27,33 +27,21 @@ namespace LAMMPS_NS {
 
 /* ----------------------------------------------------------------------
    internal fix created by pair_style mca: the persistent table of links
-   of each automaton, independent of neighbor lists.  Row m of atom i holds
-   the partner's atom ID and the whole link history (both halves, in the
-   canonical order lower ID first), so the two owners of a link hold
-   identical copies and never need each other's data (between the
-   exchanges of atoms: see MCALinkRowSync).  Each automaton also keeps the
-   law state of the link model.  Rows and state move with their atom
-   between processors and are written to restart files.
+   of each automaton, independent of neighbor lists.  Link m of atom i has
+   the partner's atom ID and a row of its history (both halves, in the
+   canonical order lower ID first) in a pool of rows.  A link between two
+   local automata has one row, which both ends share (share_rows(), after
+   atoms moved or rows were added); a link to a ghost atom has a row on
+   each processor that owns one of its automata.  The rows of the pool are
+   kept in the order in which the pair style's passes walk them.  An atom
+   that moves to another processor, and a restart file, take a copy of
+   each of its rows, so the two owners of a link never need each other's
+   data.  Each automaton also keeps the law state of the link model.
 
    The fix knows no law: the pair style passes the blocks of its link
    model (MCALinkModel) as arguments, "name link_size atom_size" each, and
    the widths of a row and of the state follow from them.
 ------------------------------------------------------------------------- */
-
-/* ----------------------------------------------------------------------
-   a style that advances a local link in the row of one of its automata
-   only (leaving the partner's copy behind during a run) brings the copies
-   up to date when asked: before atoms move between processors, at the end
-   of a run and before a restart file is written
-------------------------------------------------------------------------- */
-
-class MCALinkRowSync {
- public:
-  virtual void sync_link_rows() = 0;
-
- protected:
-  ~MCALinkRowSync() = default;    // not deleted through this interface
-};
 
 class FixMCALinks : public Fix {
  public:
@@ -78,11 +66,13 @@ class FixMCALinks : public Fix {
   int size_restart(int) override;
   int maxsize_restart() override;
 
-  // link table, maxlinks rows per atom
+  // link table, up to maxlinks links per atom
   int maxlinks;           // capacity per automaton
   int *nlinks;            // number of links of each atom
   tagint **partner;       // atom ID of the partner of each link
-  double **history;       // row_size doubles per link (see mca_link_layout.h)
+  int **slot;             // the row of each link in the pool
+  double **rows;          // the pool: row_size doubles per row (see mca_link_layout.h)
+  int nrows, maxrows;     // rows in use, allocated
   double **atom_state;    // atom_size doubles of law state per automaton
 
   MCALinkModel model;    // the blocks of a row and of the state
@@ -90,18 +80,21 @@ class FixMCALinks : public Fix {
 
   int created;    // 1 once the links have been made (kept in restart files)
 
-  // who brings the partner copies up to date (pair mca), and whether it
-  // may leave them behind during this run: not if a fix that acts before
-  // this one at pre-exchange could move atoms first
-  MCALinkRowSync *row_sync;
-  int lazy_rows;
-  void sync_rows()
-  {
-    if (row_sync) row_sync->sync_link_rows();
-  }
+  double *row(int i, int m) const { return rows[slot[i][m]]; }
+  // a new row for link m of local atom i (contents undefined)
+  double *new_row(int i, int m);
+  // room for n rows in all (new_row() grows the pool by a quarter)
+  void reserve_rows(bigint n);
+  // one row for each link between local atoms (the row of the end that
+  // evaluates it: partner_index[i][m] >= nlocal or the lower ID), the
+  // rows in the order of those ends; partner_row[i][m] is the link's
+  // index in a local partner's table.  After every reneighboring: the box
+  // may have remapped a local partner's closest image to a ghost atom
+  void share_rows(int nlocal, const tagint *tag, int *const *partner_index,
+                  int *const *partner_row);
 
   void set_capacity(int);
-  // drop row m of local atom i: the last row takes its place (host)
+  // drop link m of local atom i: the last link takes its place (host)
   void remove_row(int i, int m);
   class NeighList *build_full_list();
 
@@ -111,7 +104,8 @@ class FixMCALinks : public Fix {
   virtual void host_changed() {}
 
  protected:
-  virtual void allocate_rows(int nmax);
+  virtual void allocate_links(int nmax);
+  virtual void grow_pool(int n);
 
  private:
   class NeighList *list;

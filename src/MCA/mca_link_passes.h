@@ -21,11 +21,9 @@
             d.x(i, k), d.x_row(i, scratch) (the 3 coordinates in a row:
             the array's own, or copied into scratch), d.tag(i),
             d.nlinks(i), d.partner(i, m) (local or
-            ghost index), d.row(i, m) (row of the same link in a local
-            partner's table), d.history_row(i, m), d.atom_state(i, k),
-            d.material(type), ...; D::row_state_first: whether the link
-            pass reads a row's state before the ownership test (true on a
-            CPU) (PairMCA::HostData, MCAPairViews)
+            ghost index), d.history_row(i, m) (the link's row: one row for
+            both ends of a link between local automata), d.atom_state(i, k),
+            d.material(type), ... (PairMCA::HostData, MCAPairViews)
      Sums   where a link adds to its two automata: begin(i) gives the
             adder of automaton i; own(add, i, k, v) adds v to column k of
             i, partner_of(add, j) the target of a local partner,
@@ -37,8 +35,8 @@
             reduction in Kokkos), where wanted()
 
    Each link is evaluated once per processor that owns one of its
-   automata: by the lower ID when both are local (whose row is current
-   and advances), by each owner when the partner is a ghost atom.
+   automata: by the lower ID when both are local, by each owner (in its
+   own row) when the partner is a ghost atom.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_MCA_LINK_PASSES_H
@@ -58,19 +56,10 @@ namespace MCAKernels {
   constexpr int LS_FORCE = 0, LS_TORQUE = 3, LS_BMAT = 6, LS_SIZE = 15;
 
   // the ownership rule: a link between two local automata is evaluated
-  // by, and advances in the row of, the lower ID.  Is that the partner j
-  // of automaton i?
+  // by the lower ID.  Is that the partner j of automaton i?
   template <class D> MCA_FUNCTION bool partner_evaluates(const D &d, int i, int j)
   {
     return j < d.nlocal && d.tag(j) < d.tag(i);
-  }
-
-  // the history row of link m of automaton i that is current
-  template <class D> MCA_FUNCTION const double *current_row(const D &d, int i, int m)
-  {
-    const int j = d.partner(i, m);
-    if (partner_evaluates(d, i, j)) return d.history_row(j, d.row(i, m));
-    return d.history_row(i, m);
   }
 
   MCA_INLINE bool linked(const double *row)
@@ -79,23 +68,20 @@ namespace MCAKernels {
   }
 
   // does automaton i evaluate its link m, in the state State (LinkState)?
-  // row: the link's row, j: the partner.  On a
-  // CPU the row's state is read first: its load then overlaps the others.
-  // On a GPU it is read only for the links this thread evaluates (a load
-  // of a link the partner evaluates is wasted traffic)
+  // row: the link's row, j: the partner.  The row is read only for the
+  // links i evaluates: the row of a link the partner evaluates is the
+  // partner's (loading it would be wasted traffic, and on threads the
+  // partner's thread may be changing it)
   template <int State, class D>
   MCA_FORCE_INLINE bool evaluates(const D &d, int i, int m, double *&row, int &j)
   {
-    row = d.history_row(i, m);
-    if (D::row_state_first && static_cast<int>(row[H_STATE]) != State) return false;
     j = d.partner(i, m);
     if (partner_evaluates(d, i, j)) return false;
-    if (!D::row_state_first && static_cast<int>(row[H_STATE]) != State) return false;
-    return true;
+    row = d.history_row(i, m);
+    return static_cast<int>(row[H_STATE]) == State;
   }
 
-  // the n doubles of a row to another (a setup's copy, a local partner's
-  // copy of the same link)
+  // the n doubles of a row to another (a setup's copy)
   MCA_FORCE_INLINE void copy_row(const double *from, double *to, int n)
   {
     for (int k = 0; k < n; k++) to[k] = from[k];
@@ -110,7 +96,7 @@ namespace MCAKernels {
   {
     int n = 0;
     for (int m = 0; m < d.nlinks(i); m++)
-      if (linked(current_row(d, i, m))) n++;
+      if (linked(d.history_row(i, m))) n++;
     d.link_count(i) = n;
     const MCAMaterial &mat = d.material(d.type(i));
     const int nc = d.packing(i);
@@ -181,7 +167,6 @@ namespace MCAKernels {
 
   struct MCALinkPassFlags {
     bool commit;     // a step of a run: the rows advance (a setup works on copies)
-    bool eager;      // bring a local partner's copy of the row up to date now
     double dt;       // time step, 0 in a setup (spins turn automata only in steps)
     double cutsq;    // square of the pair cutoff (links longer are counted)
     double step;     // the time step number (a broken pair's first step)
@@ -300,7 +285,6 @@ namespace MCAKernels {
           sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
         }
         add_traction_moment_to_partner(sums, add, to, out);
-        if (p.commit && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
       }
 
       // energy and virial: the whole pair, or this owner's half of it
@@ -445,14 +429,12 @@ namespace MCAKernels {
         for (int k = 0; k < 3; k++) sums.partner(add, to, LS_FORCE + k, -out.f[k]);
         if (friction)
           for (int k = 0; k < 3; k++) sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
-        if (p.commit && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
       }
       if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, elastic_work, out.f);
     }
   }
 
   struct MCABreakFlags {
-    bool eager;        // bring a local partner's copy of the row up to date now
     double step;       // the time step number, recorded by a break
     double scatter;    // strength scatter w (0: none) and its seed
     int seed;
@@ -498,7 +480,6 @@ namespace MCAKernels {
       if (!(index >= strength_factor(p.scatter, p.seed, d.tag(lo), d.tag(hi)))) continue;
 
       break_link(row, d.layout, rule.criterion, p.step);
-      if (j < d.nlocal && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
       nbroke++;
     }
     return nbroke;
@@ -515,7 +496,7 @@ namespace MCAKernels {
     int nbroken = 0, ncontacts = 0;
     double released = 0.0;
     for (int m = 0; m < d.nlinks(i); m++) {
-      const double *row = current_row(d, i, m);
+      const double *row = d.history_row(i, m);
       if (static_cast<int>(row[H_STATE]) == LINK_CONTACT) ncontacts++;
       if (!broken(row)) continue;
       nbroken++;
@@ -562,7 +543,6 @@ namespace MCAKernels {
         w_hi = plastic_work_density(d.hardening(type_hi), d.epsp(hi));
       }
       if (!mark_heal(row, d.layout, rule, w_lo, w_hi, p.step)) continue;
-      if (j < d.nlocal && p.eager) copy_row(row, d.history_row(j, d.row(i, m)), d.layout.row_size);
     }
   }
 
@@ -575,7 +555,7 @@ namespace MCAKernels {
     const int hl = d.layout.link_offset[PART_HEALING];
     const int ca = d.layout.atom_offset[PART_CONTACT], ha = d.layout.atom_offset[PART_HEALING];
     for (int m = 0; m < d.nlinks(i); m++) {
-      const double *row = current_row(d, i, m);
+      const double *row = d.history_row(i, m);
       if (row[hl + HL_STEP] != heal_step || !linked(row)) continue;
       d.atom_state(i, ca + CA_FRICTION) += row[hl + HL_FRICTION];
       d.atom_state(i, ca + CA_WORK) += row[hl + HL_WORK];
@@ -607,16 +587,6 @@ namespace MCAKernels {
     if (commit) {
       d.atom_state(i, A_SMEAN_STEP) = smean;
       d.atom_state(i, A_SMEAN_LAW) = d.smean_pred(i);
-    }
-  }
-
-  // bring automaton i's copies of the links its partners evaluate up to date
-  template <class D> MCA_FUNCTION void sync_rows_of(const D &d, int i)
-  {
-    for (int m = 0; m < d.nlinks(i); m++) {
-      const int j = d.partner(i, m);
-      if (!partner_evaluates(d, i, j)) continue;
-      copy_row(d.history_row(j, d.row(i, m)), d.history_row(i, m), d.layout.row_size);
     }
   }
 

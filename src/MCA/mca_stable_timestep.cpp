@@ -187,7 +187,7 @@ void MCAStableTimestep::prepare(const Input &in, Comm *comm)
     double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     int nlinked = 0;
     for (int m = 0; m < d.nlinks(i); m++) {
-      const double *row = current_row(d, i, m);
+      const double *row = d.history_row(i, m);
       if (linked(row)) nlinked++;
       if (linked(row) || broken(row)) fabric_add(fab, row + H_NPREV);
     }
@@ -246,7 +246,7 @@ void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j, MCALin
 {
   const MCAHostLinks &d = in.links;
   j = d.partner(i, m);
-  const double *row = current_row(d, i, m);
+  const double *row = d.history_row(i, m);
   const bool ilo = d.tag(i) < d.tag(j);
   const double chi = face_moment_factor(in.packing[ilo ? i : j]);
   link_tangent(row, ilo, in.material[in.type[i]], in.material[in.type[j]], chi, predicted[i] > 0.0,

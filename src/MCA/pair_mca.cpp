@@ -848,10 +848,8 @@ void PairMCA::check_rigid_bodies()
   for (int k = 0; k < modify->nfix; k++)
     if (utils::strmatch(modify->fix[k]->style, "^rigid")) rigid.push_back(modify->fix[k]);
   if (rigid.empty()) return;
-  links->sync_rows();
   links->to_host();
   const int *mask = atom->mask;
-  const int row_size = links->row_size;
   for (Fix *fix : rigid) {
     const int bit = fix->groupbit;
     bigint crossing = 0;
@@ -859,7 +857,7 @@ void PairMCA::check_rigid_bodies()
     for (int i = 0; i < atom->nlocal; i++) {
       if (!(mask[i] & bit)) continue;
       for (int m = 0; m < links->nlinks[i]; m++) {
-        const double *row = &links->history[i][m * row_size];
+        const double *row = links->row(i, m);
         if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
         const int j = atom->map(links->partner[i][m]);
         if (j >= 0 && (mask[j] & bit)) continue;
@@ -1025,14 +1023,10 @@ void PairMCA::compute(int eflag, int vflag)
   predict_mean_stress();
 
   // the history advances only in steps of a run, not in its setup, so that
-  // a run 0 or a restarted run sees the same state.  A step advances a
-  // local link only in the row of its lower ID (the partner's copy follows
-  // in sync_link_rows()) unless a fix that runs before the links fix at
-  // pre-exchange could move atoms first.  Spins turn the automata only in
-  // steps of a run: a setup (or run 0) sees the positions of the last step
-  // plus any displacement since, but no rotation
-  const bool lazy = links->lazy_rows && links->row_sync == this;
-  const MCALinkPassFlags p = link_pass_flags(update->setupflag == 0, !lazy);
+  // a run 0 or a restarted run sees the same state.  Spins turn the
+  // automata only in steps of a run: a setup (or run 0) sees the positions
+  // of the last step plus any displacement since, but no rotation
+  const MCALinkPassFlags p = link_pass_flags(update->setupflag == 0);
 
   const HostData d = host_data();
   const HostLinkSums sums{atom->f, atom->torque, bmat};
@@ -1066,7 +1060,6 @@ void PairMCA::compute(int eflag, int vflag)
     for (int i = 0; i < d.nlocal; i++) pushing_pass_of<LINK_BROKEN>(d, sums, tally, p, i, totals);
   if (contacts())
     for (int i = 0; i < d.nlocal; i++) pushing_pass_of<LINK_CONTACT>(d, sums, tally, p, i, totals);
-  if (p.commit && lazy) partner_rows_stale = 1;
 
   for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, bmat[i], p.commit);
 
@@ -1074,7 +1067,7 @@ void PairMCA::compute(int eflag, int vflag)
   // step break (from the next step on they are broken pairs); the damage
   // changes only then (and is found again at a setup).  The energy the
   // breaks released leaves the elastic energy of this step's tally
-  const MCABreakFlags b = break_flags(p.eager);
+  const MCABreakFlags b = break_flags();
   if (p.commit && (fractured() || heal_reads_epsp())) {
     comm_stage = STAGE_BREAK;
     MCACompat::forward_comm(comm, this);
@@ -1092,7 +1085,8 @@ void PairMCA::compute(int eflag, int vflag)
     note_heals(totals.nhealed);
     if (links_healed)
       for (int i = 0; i < d.nlocal; i++) healed_of(d, i, b.step);
-    if (!p.heal_in_pass)
+    // (without a work criterion the contact pass marked them)
+    if (heal_reads_epsp())
       for (int i = 0; i < d.nlocal; i++) heal_pass_of(d, b, i);
   }
   if (fractured()) {
@@ -1130,7 +1124,6 @@ void PairMCA::compute(int eflag, int vflag)
 void PairMCA::update_contacts()
 {
   if (!contact_list) error->all(FLERR, "Pair mca: contacts without their neighbor list");
-  links->sync_rows();
   links->to_host();
   const int row_size = links->row_size;
   const double skin = neighbor->skin;
@@ -1149,7 +1142,7 @@ void PairMCA::update_contacts()
     int &n = links->nlinks[i];
     double *state = links->atom_state[i];
     for (int m = n - 1; m >= 0; m--) {
-      double *row = &links->history[i][m * row_size];
+      double *row = links->row(i, m);
       if (static_cast<int>(row[H_STATE]) != LINK_CONTACT) continue;
       const int j = atom->map(links->partner[i][m]);
       if (j >= 0) {
@@ -1208,7 +1201,8 @@ void PairMCA::update_contacts()
     bool known = false;
     for (int m = 0; m < n && !known; m++) known = links->partner[i][m] == tag[j];
     if (known) continue;
-    double *row = &links->history[i][n * row_size];
+    // (both ends of a local pair make the row: the partner cache keeps one)
+    double *row = links->new_row(i, n);
     for (int k = 0; k < row_size; k++) row[k] = 0.0;
     init_contact_row(i, j, row);
     links->partner[i][n] = tag[j];
@@ -1257,11 +1251,10 @@ void PairMCA::note_heals(int nhealed_local)
 
 // what a link pass needs besides the data (spins turn the automata only
 // in steps of a run: dt = 0 in a setup)
-MCALinkPassFlags PairMCA::link_pass_flags(bool commit, bool eager) const
+MCALinkPassFlags PairMCA::link_pass_flags(bool commit) const
 {
   MCALinkPassFlags p;
   p.commit = commit;
-  p.eager = eager;
   p.dt = commit ? update->dt : 0.0;
   p.cutsq = cut_global * cut_global;
   p.step = static_cast<double>(update->ntimestep);
@@ -1269,10 +1262,9 @@ MCALinkPassFlags PairMCA::link_pass_flags(bool commit, bool eager) const
   return p;
 }
 
-MCABreakFlags PairMCA::break_flags(bool eager) const
+MCABreakFlags PairMCA::break_flags() const
 {
   MCABreakFlags b;
-  b.eager = eager;
   b.step = static_cast<double>(update->ntimestep);
   b.scatter = break_scatter;
   b.seed = break_seed;
@@ -1283,26 +1275,24 @@ MCABreakFlags PairMCA::break_flags(bool eager) const
    a broken pair whose automata are farther apart than the cutoff (at the
    last step) is dropped from both automata's tables at reneighboring,
    before the partners are looked up: its partner may soon leave the ghost
-   atoms.  Both owners decide from identical copies of the row (the
-   partner copies are in sync at reneighboring), each keeps what the link
+   atoms.  Both owners decide from the same row (two local automata share
+   it; ranks that own one each have identical copies), each keeps what the link
    counted for (criterion, released energy) in its law state.  (A pair
    that comes close again interacts only through a contact model.)
 ------------------------------------------------------------------------- */
 
 void PairMCA::forget_broken_links()
 {
-  links->sync_rows();
   links->to_host();
   const int fa = model.layout().atom_offset[PART_FRACTURE];
   const int ff = model.layout().link_offset[PART_FRACTURE];
-  const int row_size = links->row_size;
   const double last_step = static_cast<double>(update->ntimestep) - 1.0;
   bool changed = false;
   for (int i = 0; i < atom->nlocal; i++) {
     int &n = links->nlinks[i];
     double *state = links->atom_state[i];
     for (int m = n - 1; m >= 0; m--) {
-      double *row = &links->history[i][m * row_size];
+      double *row = links->row(i, m);
       // (not before the first step of the broken pair: finish_break)
       if (!broken(row) || row[H_RPREV] <= cut_global || row[ff + F_STEP] >= last_step) continue;
       const int cause = static_cast<int>(row[ff + F_CAUSE]);

@@ -138,8 +138,8 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   // drop broken pairs farther apart than the cutoff from the link tables
   // (at reneighboring, before the partners are found again)
   void forget_broken_links();
-  MCAKernels::MCABreakFlags break_flags(bool eager) const;
-  MCAKernels::MCALinkPassFlags link_pass_flags(bool commit, bool eager) const;
+  MCAKernels::MCABreakFlags break_flags() const;
+  MCAKernels::MCALinkPassFlags link_pass_flags(bool commit) const;
   int links_broke;    // links broke at the last step (on some processor)
   void note_breaks(int nbroke_local);
   int links_healed;    // contacts healed at the last step (on some processor)

@@ -41,7 +41,7 @@ static const char FIX_LINKS_ID[] = "MCA_LINKS";
 PairMCALinked::PairMCALinked(LAMMPS *lmp, const char *label_) :
     Pair(lmp), links(nullptr), label(label_), capacity_user(0), cut_global(0.0),
     partner_cache(nullptr), row_cache(nullptr), cache_rows(0), cache_cols(0), cache_nlocal(-1),
-    partner_rows_stale(0), nstretched(0)
+    nstretched(0)
 {
 }
 
@@ -54,8 +54,6 @@ PairMCALinked::~PairMCALinked()
   memory->destroy(row_cache);
   // the links fix is kept: a pair style command issued again (e.g. to
   // change a setting) finds the links and their history; clear removes it
-  auto fix = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
-  if (fix && fix->row_sync == this) fix->row_sync = nullptr;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -71,7 +69,6 @@ void PairMCALinked::init_links()
                "{}: the link model ({}) differs from the one the links were made with ({}); "
                "write a restart file and read it with the new model",
                label, model.describe(), links->model.describe());
-  links->row_sync = this;
 }
 
 /* ----------------------------------------------------------------------
@@ -114,6 +111,23 @@ void PairMCALinked::create_links()
   links->set_capacity(capacity_user > 0 ? capacity_user : MAX(nmostall, 1));
 
   const int row_size = links->row_size;
+  const int nlocal = atom->nlocal;
+  links->to_host();
+  // a row for each link the end i evaluates (the ownership rule of the
+  // passes: a ghost partner or a local one of higher ID); the other end of
+  // a link between local automata shares the partner's row (below)
+  auto evaluates = [&](int i, int j) {
+    return j >= nlocal || tag[i] < tag[j];
+  };
+  bigint nrows = 0;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = firstneigh[i][jj] & NEIGHMASK;
+      if (linkable(i, j) && evaluates(i, j)) nrows++;
+    }
+  }
+  links->reserve_rows(nrows);
   bigint nlocal_links = 0;
   int duplicate = 0;
   // how far the lengths of the new links are from the sums of the radii
@@ -129,9 +143,13 @@ void PairMCALinked::create_links()
       // two images of one partner: the periodic box is too small
       for (int k = 0; k < n; k++)
         if (links->partner[i][k] == tag[j]) duplicate = 1;
-      double *row = &links->history[i][n * row_size];
-      for (int k = 0; k < row_size; k++) row[k] = 0.0;
-      init_link_row(i, j, row);
+      if (evaluates(i, j)) {
+        double *row = links->new_row(i, n);
+        for (int k = 0; k < row_size; k++) row[k] = 0.0;
+        init_link_row(i, j, row);
+      } else {
+        links->slot[i][n] = -1;
+      }
       const double sum = atom->radius[i] + atom->radius[j];
       const double dx = atom->x[j][0] - atom->x[i][0], dy = atom->x[j][1] - atom->x[i][1],
                    dz = atom->x[j][2] - atom->x[i][2];
@@ -140,6 +158,22 @@ void PairMCALinked::create_links()
       n++;
     }
     nlocal_links += n;
+  }
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    for (int m = 0; m < links->nlinks[i]; m++) {
+      if (links->slot[i][m] >= 0) continue;
+      const int j = atom->map(links->partner[i][m]);
+      for (int k = 0; k < links->nlinks[j]; k++)
+        if (links->partner[j][k] == tag[i]) links->slot[i][m] = links->slot[j][k];
+      // (not linked the other way: a row of its own, and the partner cache
+      // stops the run)
+      if (links->slot[i][m] < 0) {
+        double *row = links->new_row(i, m);
+        for (int k = 0; k < row_size; k++) row[k] = 0.0;
+        init_link_row(i, j, row);
+      }
+    }
   }
   int duplicate_all;
   MPI_Allreduce(&duplicate, &duplicate_all, 1, MPI_INT, MPI_MAX, world);
@@ -150,6 +184,7 @@ void PairMCALinked::create_links()
                "(2 (1 + tolerance) (R_i + R_j))",
                label);
   links->created = 1;
+  links->host_changed();
 
   bigint nall_links;
   MPI_Allreduce(&nlocal_links, &nall_links, 1, MPI_LMP_BIGINT, MPI_SUM, world);
@@ -166,8 +201,8 @@ void PairMCALinked::create_links()
 }
 
 /* ----------------------------------------------------------------------
-   local and ghost indices change only when LAMMPS reneighbors; the
-   partner copies were brought up to date before the atoms moved
+   local and ghost indices change only when LAMMPS reneighbors (and atoms
+   move or are sorted)
 ------------------------------------------------------------------------- */
 
 bool PairMCALinked::partners_outdated() const
@@ -178,15 +213,14 @@ bool PairMCALinked::partners_outdated() const
 bool PairMCALinked::refresh_partners()
 {
   if (!partners_outdated()) return false;
-  if (partner_rows_stale)
-    error->one(FLERR, "{}: atoms were reordered while link rows were out of date", label);
   build_partner_cache();
   return true;
 }
 
 /* ----------------------------------------------------------------------
    index of every link's partner (closest image) and, for a local partner,
-   the row of the same link in the partner's table
+   the index of the same link in the partner's table; then the two ends
+   of a link between local automata share one row (FixMCALinks::share_rows)
 ------------------------------------------------------------------------- */
 
 void PairMCALinked::build_partner_cache()
@@ -211,6 +245,7 @@ void PairMCALinked::build_partner_cache()
                    tag[j]);
     }
   cache_nlocal = nlocal;
+  links->share_rows(nlocal, tag, partner_cache, row_cache);
 }
 
 void PairMCALinked::allocate_partner_cache()
@@ -249,32 +284,10 @@ MCAHostLinks PairMCALinked::host_links() const
   d.nlinks_ = links->nlinks;
   d.partner_ = partner_cache;
   d.row_ = row_cache;
-  d.history_ = links->history;
+  d.slot_ = links->slot;
+  d.rows_ = links->rows;
   d.atom_state_ = links->atom_state;
   return d;
-}
-
-/* ----------------------------------------------------------------------
-   copy each local link's current row (lower ID) to the partner's row;
-   called by the links fix before atoms move (pre-exchange), at the end of
-   a run and before a restart file is written.  Costs one pass over the
-   links, against a copy per link and step if done in compute()
-------------------------------------------------------------------------- */
-
-bool PairMCALinked::rows_to_sync()
-{
-  if (!partner_rows_stale) return false;
-  if (cache_nlocal != atom->nlocal)
-    error->one(FLERR, "{}: atoms were reordered while link rows were out of date", label);
-  return true;
-}
-
-void PairMCALinked::sync_link_rows()
-{
-  if (!rows_to_sync()) return;
-  const MCAHostLinks d = host_links();
-  for (int i = 0; i < d.nlocal; i++) sync_rows_of(d, i);
-  partner_rows_stale = 0;
 }
 
 /* ----------------------------------------------------------------------

@@ -26,21 +26,21 @@ namespace LAMMPS_NS {
 ------------------------------------------------------------------------- */
 
 struct MCAHostLinks {
-  static constexpr bool row_state_first = true;    // see mca_link_passes.h
   int nlocal;
   MCAKernels::MCALinkLayout layout;
   const tagint *tag_;
   const int *nlinks_;
   int **partner_;    // local or ghost index of each link's partner
-  int **row_;        // row of the same link in a local partner's table
-  double **history_;
+  int **row_;        // index of the same link in a local partner's table
+  int **slot_;       // the row of each link in the pool (both ends of a local link: one row)
+  double **rows_;
   double **atom_state_;
 
   tagint tag(int i) const { return tag_[i]; }
   int nlinks(int i) const { return nlinks_[i]; }
   int partner(int i, int m) const { return partner_[i][m]; }
   int row(int i, int m) const { return row_[i][m]; }
-  double *history_row(int i, int m) const { return &history_[i][m * layout.row_size]; }
+  double *history_row(int i, int m) const { return rows_[slot_[i][m]]; }
   double &atom_state(int i, int k) const { return atom_state_[i][k]; }
 };
 
@@ -48,20 +48,17 @@ struct MCAHostLinks {
    base of the pair styles whose automata keep persistent links (the
    links fix): the fix made with the blocks of the style's link model,
    the links made at the first run, the index of every link's partner,
-   the partner copies of links between local automata, and the warning
+   one row for each link between local automata, and the warning
    for links longer than the cutoff.  A derived style says which pairs
    link (linkable) and what a new link's row holds (init_link_row)
 ------------------------------------------------------------------------- */
 
-class PairMCALinked : public Pair, public MCALinkRowSync {
+class PairMCALinked : public Pair {
  public:
   PairMCALinked(class LAMMPS *, const char *label);
   ~PairMCALinked() override;
 
   class FixMCALinks *links;
-  // a link between two local automata is advanced in the row of the
-  // lower ID only; the partner's row is brought up to date on request
-  void sync_link_rows() override;
 
  protected:
   const char *label;    // "Pair mca": how error messages name the style
@@ -69,10 +66,9 @@ class PairMCALinked : public Pair, public MCALinkRowSync {
   double cut_global;
 
   int **partner_cache;    // local or ghost index of each link's partner
-  int **row_cache;        // row of the same link in a local partner's table
+  int **row_cache;        // index of the same link in a local partner's table
   int cache_rows, cache_cols, cache_nlocal;
-  int partner_rows_stale;    // rows of local links behind their partner's copy
-  bigint nstretched;         // links longer than the cutoff at the last step
+  bigint nstretched;    // links longer than the cutoff at the last step
 
   MCALinkModel model;    // the parts of the link law and their blocks
   // the links fix with the blocks of the model (made or found)
@@ -85,12 +81,9 @@ class PairMCALinked : public Pair, public MCALinkRowSync {
   virtual void init_link_row(int i, int j, double *row) = 0;
 
   // the partner cache after LAMMPS reneighbored (or atoms moved): true
-  // if it was made again
+  // if it was made again (and the rows of local links shared)
   bool partners_outdated() const;
   bool refresh_partners();
-  // whether partner rows are behind and must be copied now (an error if
-  // the atoms were reordered since)
-  bool rows_to_sync();
   void build_partner_cache();
   virtual void allocate_partner_cache();
   int partner_index(int i, tagint partner_tag);

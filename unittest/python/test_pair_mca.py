@@ -521,14 +521,14 @@ def assert_same_flight(a, b):
 def test_links_migrate_with_load_balancing_and_restart_files(build, tmp_path):
     """The flight of test_links_migrate_between_ranks on 2 ranks, three ways.
 
-    A link between two local automata is advanced in the row of the lower ID
-    only; the other copy is brought up to date before atoms move, at the end
-    of a run and when a restart file is written.  (1) With fix balance rcb,
-    which moves atoms at pre-exchange before the links fix can act, both
-    copies are advanced every step instead (without that fallback this run
-    stops with "atoms were reordered while link rows were out of date"); (2) a restart file written in the middle
-    of the run (restart command) and read back continues the flight.  Both
-    agree with the plain run to round-off.
+    A link between two local automata has one row, which both automata
+    share; an automaton that moves to another rank takes a copy of each of
+    its rows, and at the next reneighbouring the rows are shared again (the
+    lower ID's kept).  (1) With fix balance rcb, which itself sends atoms to
+    other ranks at pre-exchange, before the links fix acts; (2) a restart
+    file written in the middle of the run (restart command), whose rows
+    hold both ends' copies, read back continues the flight.  Both agree with
+    the plain run to round-off.
     """
     _, plain = migrate_final(build, tmp_path / "plain", MIGRATE, 2)
     # recursive bisection with weights that change in time: fix balance

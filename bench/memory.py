@@ -1,0 +1,80 @@
+"""Memory per automaton of one or more LAMMPS executables: LAMMPS's own
+estimate ("Per MPI rank memory allocated", avg) and the peak resident set of
+the process (GNU time), per automaton, for the periodic fcc boxes of
+in.bench (4 n^3 automata) with pair mca (elastic, and with plasticity and
+fracture on, as run.py) and pair granular for reference.  1 rank, a few
+steps (the set-up's stable time step estimate is in the peak).
+
+    /usr/bin/python3 bench/memory.py --lmp base=/tmp/base/lmp new=~/.cache/mca/build/current/lmp
+        [--sizes 20 40] [--steps 5] [--out results/memory]
+
+An executable's directory goes first on LD_LIBRARY_PATH (a copied build
+with its liblammps.so*).  Writes OUT.md and OUT.csv.
+"""
+
+import argparse
+import csv
+import os
+import subprocess
+import tempfile
+
+from run import HERE, RUNS, parse_log, report
+
+
+def measure(lmp, label, variables, n, steps, logdir):
+    log = os.path.join(logdir, f"log.{label}.n{n}")
+    rss = log + ".rss"
+    style = "granular" if label == "granular" else "mca"
+    cmd = ["/usr/bin/time", "-f", "%M", "-o", rss, lmp, "-in", "in.bench", "-var", "style", style,
+           "-var", "geometry", "periodic", "-var", "n", str(n), "-var", "nsteps", str(steps),
+           "-log", log, "-screen", "none"]
+    for key, value in variables.items():
+        cmd += ["-var", key, value]
+    env = dict(os.environ, OMP_NUM_THREADS="1",
+               LD_LIBRARY_PATH=os.path.dirname(lmp) + ":" + os.environ.get("LD_LIBRARY_PATH", ""))
+    subprocess.run(cmd, cwd=HERE, env=env, check=True)
+    with open(log) as f:
+        r = parse_log(f.read())
+    with open(rss) as f:
+        peak_kb = int(f.read().split()[-1])
+    return {"atoms": r["atoms"], "estimate_kib": r["mem_mb_avg"] * 1024.0 / r["atoms"],
+            "peak_rss_kib": peak_kb / r["atoms"]}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--lmp", nargs="+", required=True, help="label=path of each executable")
+    ap.add_argument("--sizes", type=int, nargs="+", default=[20, 40])
+    ap.add_argument("--steps", type=int, default=5)
+    ap.add_argument("--out", default=os.path.join(HERE, "results", "memory"))
+    args = ap.parse_args()
+    builds = [(s.split("=", 1)[0], os.path.abspath(os.path.expanduser(s.split("=", 1)[1])))
+              for s in args.lmp]
+    runs = [(label, variables) for label, _, geometry, variables in RUNS if geometry == "periodic"]
+
+    rows = []
+    with tempfile.TemporaryDirectory() as logs:
+        for n in args.sizes:
+            for label, variables in runs:
+                for build, lmp in builds:
+                    if label == "granular" and build != builds[0][0]:
+                        continue    # (the same code in every build)
+                    r = measure(lmp, label, variables, n, args.steps, logs)
+                    rows.append({"build": build, "style": label, "n": n, **r})
+                    print(f"{build:8s} {label:9s} {r['atoms']:7d} automata: estimate "
+                          f"{r['estimate_kib']:.2f} KiB, peak RSS {r['peak_rss_kib']:.2f} KiB",
+                          flush=True)
+
+    with open(args.out + ".csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    lines = ["| build | style | automata | LAMMPS estimate KiB per automaton | "
+             "peak RSS KiB per automaton |", "|---|---|---|---|---|"]
+    lines += [f"| {r['build']} | {r['style']} | {r['atoms']} | {r['estimate_kib']:.2f} | "
+              f"{r['peak_rss_kib']:.2f} |" for r in rows]
+    report(lines, args.out + ".md")
+
+
+if __name__ == "__main__":
+    main()
