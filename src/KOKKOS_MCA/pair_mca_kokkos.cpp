@@ -64,7 +64,6 @@ template <class DeviceType> PairMCAKokkos<DeviceType>::~PairMCAKokkos()
   memoryKK->destroy_kokkos(k_return_scale, return_scale);
   memoryKK->destroy_kokkos(k_return_smean, return_smean);
   memoryKK->destroy_kokkos(k_partner_cache, partner_cache);
-  memoryKK->destroy_kokkos(k_row_cache, row_cache);
   tally.destroy(memoryKK, eatom, vatom);
 }
 
@@ -144,10 +143,12 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
 template <class DeviceType> void PairMCAKokkos<DeviceType>::allocate_partner_cache()
 {
   memoryKK->destroy_kokkos(k_partner_cache, partner_cache);
-  memoryKK->destroy_kokkos(k_row_cache, row_cache);
   memoryKK->create_kokkos(k_partner_cache, partner_cache, cache_rows, cache_cols,
                           "pair:partner_cache");
-  memoryKK->create_kokkos(k_row_cache, row_cache, cache_rows, cache_cols, "pair:row_cache");
+  // (the rows of the links in the partners' tables: the host's share_rows
+  // and stable time step estimate read them)
+  memory->destroy(row_cache);
+  memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
 }
 
 /* ---------------------------------------------------------------------- */

@@ -130,7 +130,7 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   void stage_views(int stage, MCAKokkos::dual_double_1d *&a, MCAKokkos::dual_double_1d *&b,
                    MCAKokkos::dual_double_2d *&c);
   // the caches of the base class, in DualViews
-  MCAKokkos::dual_int_2d k_partner_cache, k_row_cache;
+  MCAKokkos::dual_int_2d k_partner_cache;
   // materials by type
   Kokkos::View<MCAKernels::MCAMaterial *, DeviceType> d_material;
   // per-atom energy and virial

@@ -19,7 +19,7 @@
 #include "comm.h"
 #include "error.h"
 #include "mca_compat.h"
-#include "mca_link_law.h"
+#include "mca_link_passes.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -244,34 +244,27 @@ void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
                              int *const *partner_row)
 {
   to_host();
+  const MCALinkOwners owners{nlocal, tag};
   auto evaluates = [&](int i, int m) {
-    const int j = partner_index[i][m];
-    return j >= nlocal || tag[i] < tag[j];
+    return !partner_evaluates(owners, i, partner_index[i][m]);
   };
 
-  // a second end that evaluates a row takes a copy of it
-  std::vector<char> claimed(nrows, 0);
-  const int nold = nrows;
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < nlinks[i]; m++) {
-      if (!evaluates(i, m)) continue;
-      const int s = slot[i][m];
-      if (s < nold && claimed[s]) {
-        double *copy = new_row(i, m);
-        std::copy(rows[s], rows[s] + row_size, copy);
-      } else if (s < nold) {
-        claimed[s] = 1;
-      }
-    }
-
-  // the new place of each row that is kept (-1: dropped)
+  // the new place of each row that is kept (-1: dropped); a second end
+  // that evaluates a row takes a copy of it
   std::vector<int> place(nrows, -1);
   int kept = 0;
   bool in_place = true;
   for (int i = 0; i < nlocal; i++)
     for (int m = 0; m < nlinks[i]; m++) {
       if (!evaluates(i, m)) continue;
-      const int s = slot[i][m];
+      int s = slot[i][m];
+      if (place[s] >= 0) {
+        const int shared = s;
+        double *copy = new_row(i, m);
+        std::copy(rows[shared], rows[shared] + row_size, copy);
+        s = slot[i][m];
+        place.push_back(-1);
+      }
       place[s] = kept;
       if (s != kept) in_place = false;
       kept++;

@@ -42,6 +42,7 @@
 #ifndef LMP_MCA_LINK_PASSES_H
 #define LMP_MCA_LINK_PASSES_H
 
+#include "lmptype.h"
 #include "mca_contact.h"
 #include "mca_link_law.h"
 #include "mca_mean_stress.h"
@@ -61,6 +62,14 @@ namespace MCAKernels {
   {
     return j < d.nlocal && d.tag(j) < d.tag(i);
   }
+
+  // what partner_evaluates reads, where no data policy is at hand (the
+  // links fix sharing rows, the pair style making the links)
+  struct MCALinkOwners {
+    int nlocal;
+    const tagint *tags;
+    MCA_FUNCTION tagint tag(int i) const { return tags[i]; }
+  };
 
   MCA_INLINE bool linked(const double *row)
   {

@@ -85,14 +85,29 @@ void PairMCALinked::create_links()
   int **firstneigh = full->firstneigh;
   const tagint *tag = atom->tag;
 
-  // capacity: the user's, or the largest number of links of an automaton
+  // a row for each link the end i evaluates (the ownership rule of the
+  // passes: a ghost partner or a local one of higher ID); the other end of
+  // a link between local automata shares the partner's row (below)
+  const int nlocal = atom->nlocal;
+  const MCALinkOwners owners{nlocal, tag};
+  auto evaluates = [&](int i, int j) {
+    return !partner_evaluates(owners, i, j);
+  };
+
+  // capacity: the user's, or the largest number of links of an automaton;
+  // the rows of this rank
   int nmost = 0;
   tagint worst = 0;
+  bigint nrows = 0;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     int n = 0;
-    for (int jj = 0; jj < numneigh[i]; jj++)
-      if (linkable(i, firstneigh[i][jj] & NEIGHMASK)) n++;
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      const int j = firstneigh[i][jj] & NEIGHMASK;
+      if (!linkable(i, j)) continue;
+      n++;
+      if (evaluates(i, j)) nrows++;
+    }
     if (n > nmost) {
       nmost = n;
       worst = tag[i];
@@ -111,22 +126,7 @@ void PairMCALinked::create_links()
   links->set_capacity(capacity_user > 0 ? capacity_user : MAX(nmostall, 1));
 
   const int row_size = links->row_size;
-  const int nlocal = atom->nlocal;
   links->to_host();
-  // a row for each link the end i evaluates (the ownership rule of the
-  // passes: a ghost partner or a local one of higher ID); the other end of
-  // a link between local automata shares the partner's row (below)
-  auto evaluates = [&](int i, int j) {
-    return j >= nlocal || tag[i] < tag[j];
-  };
-  bigint nrows = 0;
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    for (int jj = 0; jj < numneigh[i]; jj++) {
-      const int j = firstneigh[i][jj] & NEIGHMASK;
-      if (linkable(i, j) && evaluates(i, j)) nrows++;
-    }
-  }
   links->reserve_rows(nrows);
   bigint nlocal_links = 0;
   int duplicate = 0;
