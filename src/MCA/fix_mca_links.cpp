@@ -35,6 +35,9 @@ using namespace MCAKernels;
 // the global restart record begins with this marker and names the blocks
 // of the rows (records of earlier versions begin with the capacity, > 0)
 static constexpr double NAMED_BLOCKS = -1.0;
+// history layout 1 (restart files written before 3 Dec 2026): the size of
+// its elastic block and of its plasticity block
+static constexpr int LAYOUT1 = 1, LAYOUT1_SIZE = 27, LAYOUT1_PLASTICITY_SIZE = 2;
 
 /* ----------------------------------------------------------------------
    fix ID group MCA_LINKS name link_size atom_size [name link_size atom_size ...]
@@ -410,7 +413,8 @@ void FixMCALinks::restart(char *buf)
   const bool named = list[0] == NAMED_BLOCKS;
   if (named) list++;
   const int format = static_cast<int>(list[2]);
-  if (format != 1000 * H_LAYOUT + H_SIZE)
+  const bool layout1 = format == 1000 * LAYOUT1 + LAYOUT1_SIZE;
+  if (format != 1000 * H_LAYOUT + H_SIZE && !layout1)
     error->all(FLERR,
                "Restart file holds MCA links in history layout {} with {} values each; this "
                "version reads layout {} with {}",
@@ -426,13 +430,27 @@ void FixMCALinks::restart(char *buf)
                     static_cast<int>(list[5 + 2 * b]));
   } else {
     const MCALinkPartInfo &elastic = MCA_LINK_PARTS[PART_ELASTIC];
-    file.add_part(elastic.part, elastic.name, elastic.link_size, elastic.atom_size);
+    file.add_part(elastic.part, elastic.name, format % 1000, elastic.atom_size);
   }
-  if (!model.same_blocks(file))
+  // (a file of layout 1 has the blocks of the model in their sizes then)
+  MCALinkModel expected;
+  if (layout1) {
+    for (const auto &b : model.blocks()) {
+      int size = b.link_size;
+      if (b.name == MCA_LINK_PARTS[PART_ELASTIC].name) size = LAYOUT1_SIZE;
+      if (b.name == MCA_LINK_PARTS[PART_PLASTICITY].name) size = LAYOUT1_PLASTICITY_SIZE;
+      expected.add_part(link_part_id(b.name), b.name, size, b.atom_size);
+    }
+  } else {
+    expected = model;
+  }
+  if (!expected.same_blocks(file))
     error->all(FLERR,
                "Restart file holds MCA links with the blocks ({}) as name, values per link, "
-               "values per automaton; the link model of the pair style has ({})",
-               file.describe(), model.describe());
+               "values per automaton; the link model of the pair style has ({}){}",
+               file.describe(), expected.describe(),
+               layout1 ? " in the file's history layout 1" : "");
+  layout1_file = layout1 ? file : MCALinkModel();
 
   set_capacity(static_cast<int>(list[0]));
   created = static_cast<int>(list[1]);
@@ -465,7 +483,57 @@ void FixMCALinks::unpack_restart(int nlocal, int nth)
   if (n > maxlinks)
     error->one(FLERR, "Restart file holds {} links for an automaton, more than the capacity {}", n,
                maxlinks);
-  unpack_exchange(nlocal, &extra[nlocal][m]);
+  if (layout1_file.blocks().empty())
+    unpack_exchange(nlocal, &extra[nlocal][m]);
+  else
+    unpack_layout1(nlocal, &extra[nlocal][m]);
+}
+
+/* ----------------------------------------------------------------------
+   a restart record of history layout 1: its rows converted to the present
+   layout.  Layout 1 kept a couple in each half; they were equal where the
+   model has no plasticity (one is kept), and the plasticity block now
+   keeps hi's
+------------------------------------------------------------------------- */
+
+void FixMCALinks::unpack_layout1(int nlocal, const double *buf)
+{
+  to_host();
+  const int file_row_size = layout1_file.layout().row_size;
+  int m = 0;
+  nlinks[nlocal] = static_cast<int>(buf[m++]);
+  for (int k = 0; k < atom_size; k++) atom_state[nlocal][k] = buf[m++];
+  for (int k = 0; k < nlinks[nlocal]; k++) {
+    partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
+    convert_layout1_row(&buf[m], new_row(nlocal, k));
+    m += file_row_size;
+  }
+  host_changed();
+}
+
+void FixMCALinks::convert_layout1_row(const double *old, double *row) const
+{
+  // the elastic block of layout 1: the halves of lo and hi, 8 values each
+  // (sigma, eps, t(3), couple(3)), between the half lengths and r0
+  constexpr int OLD_LO = 4, OLD_HI = 12, OLD_COUPLE = 5, OLD_R0 = 20;
+  for (int k = 0; k < H_LO; k++) row[k] = old[k];
+  for (int k = 0; k < HALF_SIZE; k++) {
+    row[H_LO + k] = old[OLD_LO + k];
+    row[H_HI + k] = old[OLD_HI + k];
+  }
+  for (int k = 0; k < 3; k++) row[H_COUPLE + k] = old[OLD_LO + OLD_COUPLE + k];
+  for (int k = 0; k < LAYOUT1_SIZE - OLD_R0; k++) row[H_R0 + k] = old[OLD_R0 + k];
+  // the other blocks, in the same order (the plasticity block then had
+  // its first values only)
+  const auto &to_blocks = model.blocks(), &from_blocks = layout1_file.blocks();
+  int from = from_blocks[0].link_size, to = to_blocks[0].link_size;
+  for (std::size_t b = 1; b < to_blocks.size(); b++) {
+    for (int k = 0; k < from_blocks[b].link_size; k++) row[to + k] = old[from + k];
+    if (to_blocks[b].name == MCA_LINK_PARTS[PART_PLASTICITY].name)
+      for (int k = 0; k < 3; k++) row[to + P_COUPLE_HI + k] = old[OLD_HI + OLD_COUPLE + k];
+    from += from_blocks[b].link_size;
+    to += to_blocks[b].link_size;
+  }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -111,6 +111,11 @@ class FixMCALinks : public Fix {
   class NeighList *list;
   // values of an automaton's exchange record (a restart record has one more: its length)
   int values_per_atom(int nlink) const { return 1 + atom_size + nlink * (1 + row_size); }
+  // the blocks of the restart file being read, where its rows are in
+  // history layout 1 (converted as they are read); empty otherwise
+  MCALinkModel layout1_file;
+  void unpack_layout1(int nlocal, const double *buf);
+  void convert_layout1_row(const double *old, double *row) const;
 };
 
 }    // namespace LAMMPS_NS

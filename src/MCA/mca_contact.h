@@ -123,9 +123,11 @@ namespace MCAKernels {
 
   // the halves of a contact at rest (apart: the next contact starts
   // stress-free at the touch distance)
-  MCA_INLINE void contact_rest(double *hist)
+  MCA_INLINE void contact_rest(double *hist, const MCALinkLayout &layout)
   {
     for (int k = 0; k < HALF_SIZE; k++) hist[H_LO + k] = hist[H_HI + k] = 0.0;
+    const int c_hi = couple_hi_offset(layout);
+    for (int m = 0; m < 3; m++) hist[H_COUPLE + m] = hist[c_hi + m] = 0.0;
   }
 
   // one step of a contact (hist updated, as linked_pair).  Its halves
@@ -167,7 +169,7 @@ namespace MCAKernels {
       double released = 0.0;
       for (int m = 0; m < 3; m++) released += mo.t_old[m] * (compliance * mo.t_old[m] + mo.dl[m]);
       hist[e.layout->link_offset[PART_CONTACT] + C_FRICTION] += 0.5 * hist[H_APREV] * released;
-      contact_rest(hist);
+      contact_rest(hist, *e.layout);
       link_area(hist, e, m_lo, m_hi, out);
       out.sig = 0.0;
       for (int m = 0; m < 3; m++) out.t[m] = 0.0;
@@ -225,7 +227,7 @@ namespace MCAKernels {
     hist[layout.link_offset[PART_CONTACT] + C_FRICTION] = 0.0;
     hist[H_WORK] = 0.0;
     // (a contact row has no plastic work, no damper force, no break)
-    contact_rest(hist);
+    contact_rest(hist, layout);
     const double scale = out.r / (hist[H_Q0LO] + hist[H_Q0HI]);
     hist[H_Q0LO] *= scale;
     hist[H_Q0HI] *= scale;

@@ -133,8 +133,10 @@ namespace MCAKernels {
   // step's elastic work that the tractions of the last step did (the
   // trial pass computes it before the correction changes them), and the
   // plastic work of the link; per automaton: its plastic work (its
-  // plastic strain is the atom style's epsp)
-  enum PlasticitySlot { P_WORK_OLD = 0, P_WORK, P_SIZE };
+  // plastic strain is the atom style's epsp), and the couple of hi's
+  // half (the correction scales each half's couple by its automaton's M,
+  // so the halves' couples differ; H_COUPLE is lo's)
+  enum PlasticitySlot { P_WORK_OLD = 0, P_WORK, P_COUPLE_HI, P_SIZE = P_COUPLE_HI + 3 };
   enum PlasticityAtomSlot { PA_WORK = 0, PA_SIZE };
   // the block of the fracture part in a link row: the criterion that broke
   // the link (BreakCriterion, 0 while intact), the step it broke at and
@@ -160,6 +162,18 @@ namespace MCAKernels {
   enum HealingSlot { HL_STEP = 0, HL_FRICTION, HL_WORK, HL_SIZE };
   enum HealingAtomSlot { HA_HEALED = 0, HA_SIZE };
   static_assert(NPARTS <= MAX_PARTS, "more link parts than MCALinkLayout holds");
+
+  // the couples of the two halves of a row: one, H_COUPLE, unless the
+  // model has plasticity, whose block keeps hi's
+  MCA_INLINE int couple_hi_offset(const MCALinkLayout &layout)
+  {
+    const int plasticity = layout.link_offset[PART_PLASTICITY];
+    return plasticity >= 0 ? plasticity + P_COUPLE_HI : static_cast<int>(H_COUPLE);
+  }
+  MCA_INLINE bool separate_couples(const MCALinkLayout &layout)
+  {
+    return layout.link_offset[PART_PLASTICITY] >= 0;
+  }
 
   struct MCALinkPartInfo {
     const char *slot;    // elastic, (plasticity, fracture, damping, ...)
@@ -260,10 +274,11 @@ namespace MCAKernels {
   {
     link_kinematics(hist, e, out, mo);
     const double *lo = hist + H_LO, *hi = hist + H_HI;
+    const double *c_lo = hist + H_COUPLE, *c_hi = hist + couple_hi_offset(*e.layout);
     mo.sig_old = 0.5 * (lo[HALF_SIG] + hi[HALF_SIG]);
     for (int m = 0; m < 3; m++) {
       mo.t_old[m] = 0.5 * (lo[HALF_T + m] + hi[HALF_T + m]);
-      mo.c_old[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
+      mo.c_old[m] = 0.5 * (c_lo[m] + c_hi[m]);
     }
   }
 
@@ -316,8 +331,9 @@ namespace MCAKernels {
     pair_rotation(n_old, n, cos_phi, sin_phi, rot);
     rotate_with_pair(lo + HALF_T, rot, n, true);
     rotate_with_pair(hi + HALF_T, rot, n, true);
-    rotate_with_pair(lo + HALF_COUPLE, rot, n, false);
-    rotate_with_pair(hi + HALF_COUPLE, rot, n, false);
+    rotate_with_pair(hist + H_COUPLE, rot, n, false);
+    if (separate_couples(*e.layout))
+      rotate_with_pair(hist + couple_hi_offset(*e.layout), rot, n, false);
 
     // shear tractions
     double dg_lo[3], dg_hi[3];
@@ -361,8 +377,6 @@ namespace MCAKernels {
                               const MCAMaterial &m_hi, const MCALinkMotion &mo,
                               const MCALinkForces &out)
   {
-    double *lo = hist + H_LO;
-    double *hi = hist + H_HI;
     const double *n = out.n;
     const double compliance = mo.q_lo / (2.0 * m_lo.shear) + mo.q_hi / (2.0 * m_hi.shear);
     const double kbend = e.chi * out.area * out.area / compliance;
@@ -370,20 +384,21 @@ namespace MCAKernels {
     double dcouple[3];
     for (int m = 0; m < 3; m++)
       dcouple[m] = kbend * (mo.dth[m] - twist * n[m]) + 2.0 * kbend * twist * n[m];
-    for (int m = 0; m < 3; m++) {
-      lo[HALF_COUPLE + m] += dcouple[m];
-      hi[HALF_COUPLE + m] += dcouple[m];
+    for (int m = 0; m < 3; m++) hist[H_COUPLE + m] += dcouple[m];
+    if (separate_couples(*e.layout)) {
+      double *c_hi = hist + couple_hi_offset(*e.layout);
+      for (int m = 0; m < 3; m++) c_hi[m] += dcouple[m];
     }
   }
 
   // the couple of the pair (mean of the halves) and the torques: moment
   // of the shear force about each centre, plus the couple
-  MCA_INLINE void link_torques(const double *hist, const MCALinkMotion &mo, MCALinkForces &out)
+  MCA_INLINE void link_torques(const double *hist, const MCALinkLayout &layout,
+                               const MCALinkMotion &mo, MCALinkForces &out)
   {
-    const double *lo = hist + H_LO;
-    const double *hi = hist + H_HI;
+    const double *c_lo = hist + H_COUPLE, *c_hi = hist + couple_hi_offset(layout);
     const double *n = out.n;
-    for (int m = 0; m < 3; m++) out.couple[m] = 0.5 * (lo[HALF_COUPLE + m] + hi[HALF_COUPLE + m]);
+    for (int m = 0; m < 3; m++) out.couple[m] = 0.5 * (c_lo[m] + c_hi[m]);
     double nxf[3];
     cross3(n, out.f, nxf);
     for (int m = 0; m < 3; m++) {
@@ -512,7 +527,7 @@ namespace MCAKernels {
     MCALinkMotion mo;
     elastic_trial(hist, e, m_lo, m_hi, out, mo);
     link_force(hist, out);
-    link_torques(hist, mo, out);
+    link_torques(hist, *e.layout, mo, out);
     // optional parts: one test each when they are off
     const int damping = e.layout->link_offset[PART_DAMPING];
     if (damping >= 0) link_damping(hist + damping, e, m_lo, m_hi, mo, out);
@@ -567,15 +582,15 @@ namespace MCAKernels {
     double *block = hist + e.layout->link_offset[PART_PLASTICITY];
     double work = 0.0;
     if (ret.scale_lo != 1.0)
-      work += plastic_correct_half(hist + H_LO, ret.scale_lo, ret.smean_lo, m_lo.shear,
-                                   hist[H_Q0LO], mo.q_lo, out.area, e.chi, out.n);
+      work += plastic_correct_half(hist + H_LO, hist + H_COUPLE, ret.scale_lo, ret.smean_lo,
+                                   m_lo.shear, hist[H_Q0LO], mo.q_lo, out.area, e.chi, out.n);
     if (ret.scale_hi != 1.0)
-      work += plastic_correct_half(hist + H_HI, ret.scale_hi, ret.smean_hi, m_hi.shear,
-                                   hist[H_Q0HI], mo.q_hi, out.area, e.chi, out.n);
+      work += plastic_correct_half(hist + H_HI, block + P_COUPLE_HI, ret.scale_hi, ret.smean_hi,
+                                   m_hi.shear, hist[H_Q0HI], mo.q_hi, out.area, e.chi, out.n);
     block[P_WORK] += work;
 
     link_force(hist, out);
-    link_torques(hist, mo, out);
+    link_torques(hist, *e.layout, mo, out);
     const int damping = e.layout->link_offset[PART_DAMPING];
     if (damping >= 0) link_damping(hist + damping, e, m_lo, m_hi, mo, out);
     link_work_new(hist, block[P_WORK_OLD], mo, out);
@@ -640,9 +655,10 @@ namespace MCAKernels {
       block[D_FN] = 0.0;
       for (int m = 0; m < 3; m++) block[D_FT + m] = 0.0;
     }
+    const int c_hi = couple_hi_offset(layout);
     for (int m = 0; m < 3; m++) {
       hist[H_LO + HALF_T + m] = hist[H_HI + HALF_T + m] = 0.0;
-      hist[H_LO + HALF_COUPLE + m] = hist[H_HI + HALF_COUPLE + m] = 0.0;
+      hist[H_COUPLE + m] = hist[c_hi + m] = 0.0;
     }
   }
 

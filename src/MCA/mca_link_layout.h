@@ -31,8 +31,8 @@ namespace MCAKernels {
      always, first, at offset 0; the blocks of optional parts (plasticity,
      fracture, damping, ...) follow in the order they are selected, at
      offsets the model computes at run time (MCALinkLayout).  The same holds
-     for the per-automaton state of the law.  Both owners of a link store
-     the whole row, in canonical order.
+     for the per-automaton state of the law.  A row is in canonical order;
+     the two ends of a link between local automata share it (FixMCALinks).
 
      Conventions of the elastic block (see doc/src/pair_mca.rst):
      - a pair is stored and computed in canonical order: "lo" is the
@@ -40,26 +40,32 @@ namespace MCAKernels {
      - tractions are tension positive; sigma is the normal traction and t
        the shear traction vector acting on lo (on hi they act with opposite
        sign), both per unit contact area
-     - each automaton keeps its half of the pair state (strain, tractions,
-       couple); the Newton-3 splits below make the two halves equal
+     - each automaton keeps its half of the pair state (strain, tractions;
+       the couple is shared: H_COUPLE); the Newton-3 splits make the two
+       halves' tractions equal
      - q0 = reference distance from an automaton's centre to the contact
        plane (q0_lo + q0_hi = reference length r0), q = q0 (1 + eps)
   ------------------------------------------------------------------------- */
 
   // the elastic block of a row (doubles).  What the mean-stress predictor
   // reads comes first (up to the normal tractions of both halves), so that
-  // its pass touches few cache lines.  H_LAYOUT numbered this order in the
-  // restart files of versions that knew no other block (1000 H_LAYOUT +
-  // H_SIZE); blocks are now recorded by name (FixMCALinks)
-  enum { H_LAYOUT = 1 };
+  // its pass touches few cache lines.  The couple is kept once: the halves'
+  // couples take the same increments and turn alike, so they are equal
+  // unless plasticity scales them apart, and then its block keeps the
+  // couple of hi (P_COUPLE_HI, couple_hi in mca_link_law.h).  H_LAYOUT
+  // numbers this order in restart files (1000 H_LAYOUT + H_SIZE); layout
+  // 1 (27 values: a couple in each half) is read and converted
+  // (convert_layout1_row); blocks are recorded by name (FixMCALinks)
+  enum { H_LAYOUT = 2 };
   enum LinkHistory {
     H_STATE = 0,    // link state (LINKED)
     H_RPREV,        // length at the last step
     H_Q0LO,         // reference half lengths
     H_Q0HI,
-    H_LO,                     // half of lo: sigma, eps, t(3), couple(3)
-    H_HI = H_LO + 8,          // half of hi
-    H_R0 = H_HI + 8,          // reference length r0
+    H_LO,                     // half of lo: sigma, eps, t(3)
+    H_HI = H_LO + 5,          // half of hi
+    H_COUPLE = H_HI + 5,      // couple of the halves (3; of lo's with plasticity)
+    H_R0 = H_COUPLE + 3,      // reference length r0
     H_A0,                     // reference contact area
     H_NPREV,                  // unit normal lo -> hi at the last step (3)
     H_APREV = H_NPREV + 3,    // contact area at the last step
@@ -68,7 +74,7 @@ namespace MCAKernels {
   };
   // offsets inside a half (ints: C++20 deprecates adding them to the
   // LinkHistory enumerators if they were another enumeration)
-  constexpr int HALF_SIG = 0, HALF_EPS = 1, HALF_T = 2, HALF_COUPLE = HALF_T + 3, HALF_SIZE = 8;
+  constexpr int HALF_SIG = 0, HALF_EPS = 1, HALF_T = 2, HALF_SIZE = 5;
   enum LinkState { LINK_NONE = 0, LINK_LINKED = 1, LINK_BROKEN = 2, LINK_CONTACT = 3 };
 
   // the elastic block of an automaton's law state (enumerators, not

@@ -148,11 +148,11 @@ namespace MCAKernels {
      twice that in twist), times the contact area for the tractions.
   ------------------------------------------------------------------------- */
 
-  MCA_INLINE double plastic_correct_half(double *half, double scale, double smean, double g,
-                                         double q0, double q, double area, double chi,
+  MCA_INLINE double plastic_correct_half(double *half, double *couple, double scale, double smean,
+                                         double g, double q0, double q, double area, double chi,
                                          const double *n)
   {
-    const int sig = HALF_SIG, t = HALF_T, couple = HALF_COUPLE;
+    const int sig = HALF_SIG, t = HALF_T;
     const double sig_c = (half[sig] - smean) * scale + smean;
     double work = sig_c * (half[sig] - sig_c) * q0;
     half[sig] = sig_c;
@@ -166,9 +166,9 @@ namespace MCAKernels {
     // part over the twice stiffer torsion
     double dc[3], cc[3];
     for (int m = 0; m < 3; m++) {
-      cc[m] = half[couple + m] * scale;
-      dc[m] = half[couple + m] - cc[m];
-      half[couple + m] = cc[m];
+      cc[m] = couple[m] * scale;
+      dc[m] = couple[m] - cc[m];
+      couple[m] = cc[m];
     }
     const double kface = chi * area * area * 2.0 * g / q;
     if (kface > 0.0) {

@@ -365,7 +365,7 @@ def test_restart_with_another_history_layout_is_refused(build, tmp_path):
     restart = tmp_path / "two.restart"
     data = restart.read_bytes()
     # the links fix records (capacity, created, 1000 x layout + values per link)
-    current = struct.pack("<d", 1027.0)
+    current = struct.pack("<d", 2024.0)
     assert data.count(current) == 1, "the layout record of the links fix was not found once"
     restart.write_bytes(data.replace(current, struct.pack("<d", 27.0)))
     result = build.run("read_restart two.restart\n" + PAIR.split("\n", 1)[1] + "run 0\n",
@@ -373,4 +373,4 @@ def test_restart_with_another_history_layout_is_refused(build, tmp_path):
     output = result.stdout + result.stderr
     assert 0 < result.returncode < 128, output[-2000:]
     assert re.search(r"ERROR: Restart file holds MCA links in history layout 0 with 27 values "
-                     r"each; this version reads layout 1 with 27", output), output[-2000:]
+                     r"each; this version reads layout 2 with 24", output), output[-2000:]

@@ -359,14 +359,14 @@ def test_chain_bad_input(slurm, tmp_path):
             f.unlink()
     restart = d / "batch.300.restart"
     data = restart.read_bytes()
-    record = struct.pack("<d", 1027.0)
+    record = struct.pack("<d", 2024.0)
     assert data.count(record) == 1
     restart.write_bytes(data.replace(record, struct.pack("<d", 27.0)))
     (d / "final.dump").unlink()
     rc, job, out = sbatch(slurm, d, ["--ntasks=2", "chain.sbatch", "continue"] + SMALL)
     assert rc != 0, out
     assert re.search(r"link 2 failed \(exit status \d+\): ERROR: Restart file holds MCA links in "
-                     r"history layout 0 with 27 values each; this version reads layout 1", out), out
+                     r"history layout 0 with 27 values each; this version reads layout 2", out), out
     assert chain_state(d)["status"] == "failed"
     wait_for(lambda: queue(slurm) == "", 60, "the successor to be cancelled")
     rc, _, out = sbatch(slurm, d, ["--ntasks=2", "chain.sbatch", "continue"] + SMALL)
