@@ -1,6 +1,9 @@
 """Memory per automaton of one or more LAMMPS executables: LAMMPS's own
-estimate ("Per MPI rank memory allocated", avg) and the peak resident set of
-the process (GNU time), per automaton, for the periodic fcc boxes of
+estimate ("Per MPI rank memory allocated", avg), the heap in use after the
+run (glibc's allocated bytes, "Current reserved memory pool size" of "info
+memory", which in.bench prints at its end: what a run holds between its
+set-ups, whether LAMMPS's estimate counts it or not) and the peak resident
+set of the process (GNU time), per automaton, for the periodic fcc boxes of
 in.bench (4 n^3 automata) with pair mca (elastic, and with plasticity and
 fracture on, as run.py) and pair granular for reference.  1 rank, a few
 steps (the set-up's stable time step estimate is in the peak).
@@ -15,6 +18,7 @@ with its liblammps.so*).  Writes OUT.md and OUT.csv.
 import argparse
 import csv
 import os
+import re
 import subprocess
 import tempfile
 
@@ -37,7 +41,10 @@ def measure(lmp, label, variables, n, steps, logdir):
         r = parse_log(f.read())
     with open(rss) as f:
         peak_kb = int(f.read().split()[-1])
+    with open(log) as f:
+        heap = re.findall(r"Current reserved memory pool size: ([\d.eE+-]+) Mbyte", f.read())
     return {"atoms": r["atoms"], "estimate_kib": r["mem_mb_avg"] * 1024.0 / r["atoms"],
+            "heap_after_kib": float(heap[-1]) * 1024.0 / r["atoms"] if heap else float("nan"),
             "peak_rss_kib": peak_kb / r["atoms"]}
 
 
@@ -62,7 +69,8 @@ def main():
                     r = measure(lmp, label, variables, n, args.steps, logs)
                     rows.append({"build": build, "style": label, "n": n, **r})
                     print(f"{build:8s} {label:9s} {r['atoms']:7d} automata: estimate "
-                          f"{r['estimate_kib']:.2f} KiB, peak RSS {r['peak_rss_kib']:.2f} KiB",
+                          f"{r['estimate_kib']:.2f} KiB, heap after the run "
+                          f"{r['heap_after_kib']:.2f} KiB, peak RSS {r['peak_rss_kib']:.2f} KiB",
                           flush=True)
 
     with open(args.out + ".csv", "w", newline="") as f:
@@ -70,9 +78,9 @@ def main():
         w.writeheader()
         w.writerows(rows)
     lines = ["| build | style | automata | LAMMPS estimate KiB per automaton | "
-             "peak RSS KiB per automaton |", "|---|---|---|---|---|"]
+             "heap after the run | peak RSS |", "|---|---|---|---|---|---|"]
     lines += [f"| {r['build']} | {r['style']} | {r['atoms']} | {r['estimate_kib']:.2f} | "
-              f"{r['peak_rss_kib']:.2f} |" for r in rows]
+              f"{r['heap_after_kib']:.2f} | {r['peak_rss_kib']:.2f} |" for r in rows]
     report(lines, args.out + ".md")
 
 

@@ -114,21 +114,25 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
     memoryKK->create_kokkos(k_pred_stiffness, pred_stiffness, kk_nmax, "pair:pred_stiffness");
     memoryKK->create_kokkos(k_dsmean, dsmean, kk_nmax, "pair:dsmean");
     memoryKK->create_kokkos(k_smean_pred, smean_pred, kk_nmax, "pair:smean_pred");
-    memoryKK->destroy_kokkos(k_return_scale, return_scale);
-    memoryKK->destroy_kokkos(k_return_smean, return_smean);
-    memoryKK->create_kokkos(k_return_scale, return_scale, kk_nmax, "pair:return_scale");
-    memoryKK->create_kokkos(k_return_smean, return_smean, kk_nmax, "pair:return_smean");
+    if (plastic()) {
+      memoryKK->destroy_kokkos(k_return_scale, return_scale);
+      memoryKK->destroy_kokkos(k_return_smean, return_smean);
+      memoryKK->create_kokkos(k_return_scale, return_scale, kk_nmax, "pair:return_scale");
+      memoryKK->create_kokkos(k_return_smean, return_smean, kk_nmax, "pair:return_smean");
+    }
     d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nmax);
     d_foreign = MCAKokkos::int_1d<DeviceType>("pair:foreign", kk_nmax);
     d_fabric = MCAKokkos::double_2d<DeviceType>("pair:fabric", kk_nmax, 6);
-    d_predictor_sums = MCAKokkos::double_2d<DeviceType>("pair:predictor_sums", kk_nmax, PS_SIZE);
-    d_link_sums = MCAKokkos::double_2d<DeviceType>("pair:link_sums", kk_nmax, LS_SIZE);
+    // the predictor and the link passes share their sums (and copies): the
+    // predictor's are read (and left zero) before the link pass adds to
+    // them, and it uses the first PS_SIZE columns only
+    static_assert(PS_SIZE <= LS_SIZE, "the predictor's sums fit in the link sums");
+    d_link_sums = MCAKokkos::double_2d<DeviceType>("pair:sums", kk_nmax, LS_SIZE);
+    d_predictor_sums = d_link_sums;
     if (need_dup()) {
       const int copies = typename DeviceType::execution_space().concurrency();
-      d_predictor_copies =
-          MCAKokkos::double_3d<DeviceType>("pair:predictor_copies", copies, kk_nmax, PS_SIZE);
-      d_link_copies =
-          MCAKokkos::double_3d<DeviceType>("pair:link_copies", copies, kk_nmax, LS_SIZE);
+      d_link_copies = MCAKokkos::double_3d<DeviceType>("pair:sum_copies", copies, kk_nmax, LS_SIZE);
+      d_predictor_copies = d_link_copies;
     }
   }
   if ((eflag_atom || vflag_atom) && atom->nmax > tally_nmax) {
@@ -627,14 +631,15 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::estimate_forward_com
 template <class DeviceType> double PairMCAKokkos<DeviceType>::memory_usage()
 {
   double bytes = PairMCA::memory_usage();
-  // per automaton: 5 communicated values, fabric, the sums of both passes
-  // and their copies (one per thread on the host), link count and flag
+  // per automaton: 3 communicated values (5 with plasticity), fabric, the
+  // sums the two passes share and their copies (one per thread on the
+  // host), link count and flag
   typedef typename DeviceType::memory_space memory_space;
   const double copies = Kokkos::SpaceAccessibility<Kokkos::HostSpace, memory_space>::accessible
       ? typename DeviceType::execution_space().concurrency()
       : 0.0;
-  bytes += (5.0 + 6.0 + (1.0 + (need_dup() ? copies : 0.0)) * (PS_SIZE + LS_SIZE)) * kk_nmax *
-          sizeof(double) +
+  bytes += ((plastic() ? 5.0 : 3.0) + 6.0 + (1.0 + (need_dup() ? copies : 0.0)) * LS_SIZE) *
+          kk_nmax * sizeof(double) +
       2.0 * kk_nmax * sizeof(int);
   return bytes;
 }

@@ -267,15 +267,15 @@ template <class Pass> struct MCAChunkedReduce {
   }
 };
 
-// an automaton's sums plus, where other chunks add to it, the copies of
-// all chunks (none with DirectSums); all are left zero for the next pass
+// the first n sums of an automaton plus, where other chunks add to it,
+// the copies of all chunks (none with DirectSums); all are left zero for
+// the next pass
 template <class DeviceType>
 KOKKOS_INLINE_FUNCTION void load_sums(const MCAKokkos::double_2d<DeviceType> &sums,
                                       const MCAKokkos::double_3d<DeviceType> &copies,
-                                      const MCAKokkos::int_1d<DeviceType> &foreign, int i,
+                                      const MCAKokkos::int_1d<DeviceType> &foreign, int i, int n,
                                       double *out)
 {
-  const int n = sums.extent(1);
   for (int k = 0; k < n; k++) {
     out[k] = sums(i, k);
     sums(i, k) = 0.0;
@@ -315,7 +315,7 @@ template <class DeviceType> struct MCAPredictorFinish {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     double sums[PS_SIZE];
-    load_sums(d.predictor_sums, copies, d.foreign, i, sums);
+    load_sums(d.predictor_sums, copies, d.foreign, i, PS_SIZE, sums);
     predictor_finish_of(d, i, sums, setup_pass);
   }
 };
@@ -410,7 +410,7 @@ template <class DeviceType> struct MCAPlasticReturnPass {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     double sums[LS_SIZE];
-    load_sums(d.link_sums, copies, d.foreign, i, sums);
+    load_sums(d.link_sums, copies, d.foreign, i, LS_SIZE, sums);
     plastic_return_of(d, i, sums + LS_BMAT, commit);
   }
 };
@@ -500,7 +500,7 @@ template <class DeviceType> struct MCALinkFinish {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     double sums[LS_SIZE];
-    load_sums(d.link_sums, copies, d.foreign, i, sums);
+    load_sums(d.link_sums, copies, d.foreign, i, LS_SIZE, sums);
     add_link_forces(d, i, sums);
     automaton_outputs_of(d, i, sums + LS_BMAT, commit);
     if (eflag_atom) d.eatom(i) += d.atom_tally(i, AT_ENERGY);

@@ -167,6 +167,21 @@ void MCAStableTimestep::grow(int n)
   memory->create(sums, nmax, 2, "mca/timestep:sums");
 }
 
+void MCAStableTimestep::release()
+{
+  memory->destroy(finv);
+  memory->destroy(hpred);
+  memory->destroy(predicted);
+  memory->destroy(motion);
+  memory->destroy(sums);
+  nmax = 0;
+  for (auto *v : {&sqrt_m, &sqrt_j, &rhs_fwd, &rhs_tr, &diag, &next})
+    std::vector<double>().swap(*v);
+  std::vector<LinkEntry>().swap(entries);
+  std::vector<LinkEnd>().swap(ends);
+  std::vector<int>().swap(first);
+}
+
 /* ----------------------------------------------------------------------
    what every automaton's links need of it, sent to the ghosts: its
    inverse fabric tensor (over linked and broken pairs, as the predictor
@@ -582,6 +597,7 @@ MCAStableTimestep::Monitor MCAStableTimestep::monitor(const Input &in)
   mon.atom_type = static_cast<int>(all[0]);
   mon.link_i = std::min(mon.atom, all[1]);
   mon.link_j = std::max(mon.atom, all[1]);
+  release();
   return mon;
 }
 
@@ -592,6 +608,13 @@ MCAStableTimestep::Monitor MCAStableTimestep::monitor(const Input &in)
 ------------------------------------------------------------------------- */
 
 MCAStableTimestep::Result MCAStableTimestep::estimate(const Input &in, Comm *comm)
+{
+  const Result res = lanczos_estimate(in, comm);
+  release();
+  return res;
+}
+
+MCAStableTimestep::Result MCAStableTimestep::lanczos_estimate(const Input &in, Comm *comm)
 {
   Result res;
   res.dt = std::numeric_limits<double>::infinity();
@@ -689,9 +712,6 @@ MCAStableTimestep::Result MCAStableTimestep::estimate(const Input &in, Comm *com
   }
   res.dt = (res.omega > 0.0) ? critical_timestep(res.omega, res.zeta)
                              : std::numeric_limits<double>::infinity();
-  // the tangents are made again for the next estimate
-  std::vector<LinkEntry>().swap(entries);
-  std::vector<LinkEnd>().swap(ends);
   return res;
 }
 

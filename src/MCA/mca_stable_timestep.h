@@ -126,6 +126,10 @@ class MCAStableTimestep : protected Pointers {
   std::vector<int> first;    // ends of local automaton i: first[i] ... first[i + 1] - 1
 
   void grow(int n);
+  // the per-automaton arrays and the link table live only while an
+  // estimate or a check runs (at a setup or a reneighbouring): freed after
+  void release();
+  Result lanczos_estimate(const Input &, Comm *);
   void prepare(const Input &, Comm *);
   void cache_links(const Input &);
   // the entry an end reads, and whether it reads it swapped

@@ -951,8 +951,11 @@ void PairMCA::grow_peratom()
   memory->create(link_count, nmax, "pair:link_count");
   memory->create(dsmean, nmax, "pair:dsmean");
   memory->create(smean_pred, nmax, "pair:smean_pred");
-  memory->create(return_scale, nmax, "pair:return_scale");
-  memory->create(return_smean, nmax, "pair:return_smean");
+  // (the return's arrays only in a model with plasticity)
+  if (plastic()) {
+    memory->create(return_scale, nmax, "pair:return_scale");
+    memory->create(return_smean, nmax, "pair:return_smean");
+  }
 }
 
 void PairMCA::destroy_peratom()
@@ -1573,8 +1576,8 @@ void *PairMCA::extract(const char *str, int &dim)
 
 double PairMCA::memory_usage()
 {
-  // link_count, pred_stiffness, dsmean, smean_pred, return M and mean,
-  // predictor sums, B
-  return (6.0 + PS_SIZE + 9.0) * nmax * sizeof(double) +
+  // link_count, pred_stiffness, dsmean, smean_pred, predictor sums, B;
+  // with plasticity the return's M and mean stress
+  return (4.0 + (plastic() ? 2.0 : 0.0) + PS_SIZE + 9.0) * nmax * sizeof(double) +
       2.0 * cache_rows * cache_cols * sizeof(int);
 }
