@@ -269,8 +269,10 @@ namespace MCAKernels {
     for (int m = 0; m < 3; m++) mo.dth[m] = e.dt * (e.w_hi[m] - e.w_lo[m]);
   }
 
-  MCA_INLINE void link_motion(const double *hist, const MCALinkEnds &e, MCALinkForces &out,
-                              MCALinkMotion &mo)
+  // (forced inline: with the couple's offset read from the layout, GCC
+  // stopped inlining it, and the call passed out and mo through memory)
+  MCA_FORCE_INLINE void link_motion(const double *hist, const MCALinkEnds &e, MCALinkForces &out,
+                                    MCALinkMotion &mo)
   {
     link_kinematics(hist, e, out, mo);
     const double *lo = hist + H_LO, *hi = hist + H_HI;

@@ -52,7 +52,7 @@ namespace MCAKernels {
   // its pass touches few cache lines.  The couple is kept once: the halves'
   // couples take the same increments and turn alike, so they are equal
   // unless plasticity scales them apart, and then its block keeps the
-  // couple of hi (P_COUPLE_HI, couple_hi in mca_link_law.h).  H_LAYOUT
+  // couple of hi (P_COUPLE_HI, couple_hi_offset in mca_link_law.h).  H_LAYOUT
   // numbers this order in restart files (1000 H_LAYOUT + H_SIZE); layout
   // 1 (27 values: a couple in each half) is read and converted
   // (convert_layout1_row); blocks are recorded by name (FixMCALinks)
