@@ -149,10 +149,6 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::allocate_partner_cac
   memoryKK->destroy_kokkos(k_partner_cache, partner_cache);
   memoryKK->create_kokkos(k_partner_cache, partner_cache, cache_rows, cache_cols,
                           "pair:partner_cache");
-  // (the rows of the links in the partners' tables: the host's share_rows
-  // and stable time step estimate read them)
-  memory->destroy(row_cache);
-  memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
 }
 
 /* ---------------------------------------------------------------------- */

@@ -243,8 +243,7 @@ void FixMCALinks::reserve_rows(bigint n)
    nothing moves
 ------------------------------------------------------------------------- */
 
-void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_index,
-                             int *const *partner_row)
+void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_index)
 {
   to_host();
   const MCALinkOwners owners{nlocal, tag};
@@ -295,9 +294,18 @@ void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
       for (int m = 0; m < nlinks[i]; m++)
         if (evaluates(i, m)) slot[i][m] = place[slot[i][m]];
   }
+  // (every link to a local partner is in the partner's table too)
   for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < nlinks[i]; m++)
-      if (!evaluates(i, m)) slot[i][m] = slot[partner_index[i][m]][partner_row[i][m]];
+    for (int m = 0; m < nlinks[i]; m++) {
+      const int j = partner_index[i][m];
+      if (j >= nlocal) continue;
+      int k = 0;
+      while (k < nlinks[j] && partner[j][k] != tag[i]) k++;
+      if (k == nlinks[j])
+        error->one(FLERR, "Fix MCA_LINKS: automaton {} is linked to {} but not the other way",
+                   tag[i], tag[j]);
+      if (!evaluates(i, m)) slot[i][m] = slot[j][k];
+    }
   nrows = kept;
   // (the rows of atoms that came with copies of both ends, or from a
   // restart file, are given back)
@@ -363,14 +371,30 @@ int FixMCALinks::pack_exchange(int i, double *buf)
 
 int FixMCALinks::unpack_exchange(int nlocal, double *buf)
 {
+  return unpack_record(nlocal, buf, false);
+}
+
+/* ----------------------------------------------------------------------
+   the links and law state of a new local atom from its record; with
+   layout1, the rows are in history layout 1 (a restart file of an earlier
+   version) and are converted
+------------------------------------------------------------------------- */
+
+int FixMCALinks::unpack_record(int nlocal, const double *buf, bool layout1)
+{
   to_host();
+  const int record_row_size = layout1 ? layout1_file.layout().row_size : row_size;
   int m = 0;
   nlinks[nlocal] = static_cast<int>(buf[m++]);
   for (int k = 0; k < atom_size; k++) atom_state[nlocal][k] = buf[m++];
   for (int k = 0; k < nlinks[nlocal]; k++) {
     partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
-    memcpy(new_row(nlocal, k), &buf[m], row_size * sizeof(double));
-    m += row_size;
+    double *row = new_row(nlocal, k);
+    if (layout1)
+      convert_layout1_row(&buf[m], row);
+    else
+      memcpy(row, &buf[m], row_size * sizeof(double));
+    m += record_row_size;
   }
   host_changed();
   return m;
@@ -483,33 +507,14 @@ void FixMCALinks::unpack_restart(int nlocal, int nth)
   if (n > maxlinks)
     error->one(FLERR, "Restart file holds {} links for an automaton, more than the capacity {}", n,
                maxlinks);
-  if (layout1_file.blocks().empty())
-    unpack_exchange(nlocal, &extra[nlocal][m]);
-  else
-    unpack_layout1(nlocal, &extra[nlocal][m]);
+  unpack_record(nlocal, &extra[nlocal][m], !layout1_file.blocks().empty());
 }
 
 /* ----------------------------------------------------------------------
-   a restart record of history layout 1: its rows converted to the present
-   layout.  Layout 1 kept a couple in each half; they were equal where the
-   model has no plasticity (one is kept), and the plasticity block now
-   keeps hi's
+   a row of history layout 1 in the present layout.  Layout 1 kept a
+   couple in each half; they were equal where the model has no plasticity
+   (one is kept), and the plasticity block now keeps hi's
 ------------------------------------------------------------------------- */
-
-void FixMCALinks::unpack_layout1(int nlocal, const double *buf)
-{
-  to_host();
-  const int file_row_size = layout1_file.layout().row_size;
-  int m = 0;
-  nlinks[nlocal] = static_cast<int>(buf[m++]);
-  for (int k = 0; k < atom_size; k++) atom_state[nlocal][k] = buf[m++];
-  for (int k = 0; k < nlinks[nlocal]; k++) {
-    partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
-    convert_layout1_row(&buf[m], new_row(nlocal, k));
-    m += file_row_size;
-  }
-  host_changed();
-}
 
 void FixMCALinks::convert_layout1_row(const double *old, double *row) const
 {

@@ -87,11 +87,9 @@ class FixMCALinks : public Fix {
   void reserve_rows(bigint n);
   // one row for each link between local atoms (the row of the end that
   // evaluates it: partner_index[i][m] >= nlocal or the lower ID), the
-  // rows in the order of those ends; partner_row[i][m] is the link's
-  // index in a local partner's table.  After every reneighboring: the box
+  // rows in the order of those ends.  After every reneighboring: the box
   // may have remapped a local partner's closest image to a ghost atom
-  void share_rows(int nlocal, const tagint *tag, int *const *partner_index,
-                  int *const *partner_row);
+  void share_rows(int nlocal, const tagint *tag, int *const *partner_index);
 
   void set_capacity(int);
   // drop link m of local atom i: the last link takes its place (host)
@@ -114,7 +112,7 @@ class FixMCALinks : public Fix {
   // the blocks of the restart file being read, where its rows are in
   // history layout 1 (converted as they are read); empty otherwise
   MCALinkModel layout1_file;
-  void unpack_layout1(int nlocal, const double *buf);
+  int unpack_record(int nlocal, const double *buf, bool layout1);
   void convert_layout1_row(const double *old, double *row) const;
 };
 

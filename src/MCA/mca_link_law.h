@@ -170,9 +170,10 @@ namespace MCAKernels {
     const int plasticity = layout.link_offset[PART_PLASTICITY];
     return plasticity >= 0 ? plasticity + P_COUPLE_HI : static_cast<int>(H_COUPLE);
   }
+  // the two halves keep couples of their own (else they share H_COUPLE)
   MCA_INLINE bool separate_couples(const MCALinkLayout &layout)
   {
-    return layout.link_offset[PART_PLASTICITY] >= 0;
+    return couple_hi_offset(layout) != H_COUPLE;
   }
 
   struct MCALinkPartInfo {

@@ -178,8 +178,6 @@ void MCAStableTimestep::release()
   for (auto *v : {&sqrt_m, &sqrt_j, &rhs_fwd, &rhs_tr, &diag, &next})
     std::vector<double>().swap(*v);
   std::vector<LinkEntry>().swap(entries);
-  std::vector<LinkEnd>().swap(ends);
-  std::vector<int>().swap(first);
 }
 
 /* ----------------------------------------------------------------------
@@ -269,39 +267,25 @@ void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j, MCALin
                t);
 }
 
-double MCAStableTimestep::end_weight(const Input &in, const LinkEnd &e) const
+double MCAStableTimestep::end_weight(int nlocal, int j, bool swapped)
 {
-  if (e.j >= in.links.nlocal) return 0.5;
-  return e.entry >= 0 ? 1.0 : 0.0;
+  if (j >= nlocal) return 0.5;
+  return swapped ? 0.0 : 1.0;
 }
 
 /* ----------------------------------------------------------------------
-   the links that act, with all the estimate needs of them (the inverse
+   the links, with all the estimate needs of those that act (the inverse
    fabric tensors and predictor stiffnesses of the ghosts are known): an
-   entry made by the end that owns the link (the lower ID of two local
-   automata, the local one of a link to a ghost), then the ends of each
-   automaton in the order of its rows
+   entry at each row of the pool, made by the end that evaluates its link
+   (the rows of the pool are shared, FixMCALinks::share_rows)
 ------------------------------------------------------------------------- */
 
 void MCAStableTimestep::cache_links(const Input &in)
 {
   const MCAHostLinks &d = in.links;
   const int nlocal = d.nlocal;
-  entries.clear();
-  ends.clear();
-  first.assign(nlocal + 1, 0);
-  // where each automaton's rows start in the list of all rows, and the
-  // entry each owned row made (-1: none, the link does not act); room for
-  // every row at once (grown by doubling, the last copy of a table would
-  // touch up to twice its size: the peak memory of a run)
-  std::vector<int> row_start(nlocal + 1, 0);
-  for (int i = 0; i < nlocal; i++) row_start[i + 1] = row_start[i] + d.nlinks(i);
-  std::vector<int> row_entry(row_start[nlocal], -1);
-  std::size_t owned = 0;
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < d.nlinks(i); m++)
-      if (!partner_evaluates(d, i, d.partner(i, m))) owned++;
-  entries.reserve(owned);
+  LinkEntry none{};
+  entries.assign(d.nrows, none);
   MCALinkTangent t;
   int j;
   for (int i = 0; i < nlocal; i++)
@@ -309,8 +293,8 @@ void MCAStableTimestep::cache_links(const Input &in)
       if (partner_evaluates(d, i, d.partner(i, m))) continue;
       tangent_of(in, i, m, j, t);
       if (!t.linked && t.kn == 0.0) continue;
-      LinkEntry e;
-      e.flags = t.linked ? LINKED : 0;
+      LinkEntry &e = entries[d.slot(i, m)];
+      e.flags = ACTS | (t.linked ? LINKED : 0);
       for (int k = 0; k < 3; k++) e.n[k] = static_cast<float>(t.n[k]);
       e.q_i = t.q_i;
       e.q_j = t.q_j;
@@ -333,37 +317,20 @@ void MCAStableTimestep::cache_links(const Input &in)
       const double gamma_j = dot3(fn, t.n) / 3.0;
       e.jacobi_fwd = t.linked ? gamma_i * t.a_j / (t.area * in.material[in.type[j]].bulk) : 0.0;
       e.jacobi_tr = t.linked ? gamma_j * t.a_i / (t.area * in.material[in.type[i]].bulk) : 0.0;
-      row_entry[row_start[i] + m] = static_cast<int>(entries.size());
-      entries.push_back(e);
     }
+}
 
-  // each automaton's ends, in the order of its rows (room for all rows: a
-  // link that does not act has no end); the other end of a local pair
-  // finds the entry through the partner's row of the link
-  ends.reserve(row_start[nlocal]);
-  for (int i = 0; i < nlocal; i++) {
-    first[i] = static_cast<int>(ends.size());
-    for (int m = 0; m < d.nlinks(i); m++) {
-      const int jj = d.partner(i, m);
-      const bool own = !partner_evaluates(d, i, jj);
-      const int made = row_entry[own ? row_start[i] + m : row_start[jj] + d.row(i, m)];
-      if (made >= 0) ends.push_back({jj, own ? made : swapped_entry(made)});
-    }
+template <class F> void MCAStableTimestep::for_each_end(const MCAHostLinks &d, int i, F f) const
+{
+  for (int m = 0; m < d.nlinks(i); m++) {
+    const int j = d.partner(i, m);
+    const LinkEntry &e = entries[d.slot(i, m)];
+    if (e.flags & ACTS) f(j, e, partner_evaluates(d, i, j));
   }
-  first[nlocal] = static_cast<int>(ends.size());
 }
 
-const MCAStableTimestep::LinkEntry &MCAStableTimestep::entry(const LinkEnd &end,
-                                                             bool &swapped) const
+MCALinkTangent MCAStableTimestep::tangent(const LinkEntry &e, bool swapped)
 {
-  swapped = end.entry < 0;
-  return entries[swapped ? swapped_entry(end.entry) : end.entry];
-}
-
-MCALinkTangent MCAStableTimestep::tangent(const LinkEnd &end) const
-{
-  bool swapped;
-  const LinkEntry &e = entry(end, swapped);
   MCALinkTangent t;
   for (int k = 0; k < 3; k++) t.n[k] = swapped ? -e.n[k] : e.n[k];
   t.q_i = swapped ? e.q_j : e.q_i;
@@ -383,10 +350,8 @@ MCALinkTangent MCAStableTimestep::tangent(const LinkEnd &end) const
   return t;
 }
 
-void MCAStableTimestep::jacobi_weights(const LinkEnd &end, double &fwd, double &tr) const
+void MCAStableTimestep::jacobi_weights(const LinkEntry &e, bool swapped, double &fwd, double &tr)
 {
-  bool swapped;
-  const LinkEntry &e = entry(end, swapped);
   fwd = swapped ? e.jacobi_tr : e.jacobi_fwd;
   tr = swapped ? e.jacobi_fwd : e.jacobi_tr;
 }
@@ -429,7 +394,8 @@ void MCAStableTimestep::set_motion(const Input &in, Comm *comm, const double *x)
 
 void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, double *y)
 {
-  const int nlocal = in.links.nlocal;
+  const MCAHostLinks &d = in.links;
+  const int nlocal = d.nlocal;
   set_motion(in, comm, x);
   rhs_fwd.resize(nlocal);
   rhs_tr.resize(nlocal);
@@ -443,11 +409,9 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
     if (!(predicted[i] > 0.0)) continue;
     const double bulk = in.material[in.type[i]].bulk;
     double s = 0.0, r = 0.0, q = 0.0, w = 0.0;
-    for (int k = first[i]; k < first[i + 1]; k++) {
-      const LinkEnd &e = ends[k];
-      const MCALinkTangent t = tangent(e);
-      if (!t.linked) continue;
-      const int j = e.j;
+    for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
+      const MCALinkTangent t = tangent(e, swapped);
+      if (!t.linked) return;
       double dr, slip[3], fn[3];
       tangent_motion(t, motion[i], motion[i] + 3, motion[j], motion[j] + 3, dr, slip);
       fabric_times(finv[i], t.n, fn);
@@ -457,7 +421,7 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
       q += gamma * dr * t.inv_cn + dot3(slip, fn) * t.inv_ct / 3.0;
       // (the weight of i's own mean stress: gamma a_i / (A K_i) = gamma w_i D_i)
       w += gamma * t.a_i * t.inv_cn / (bulk * t.kn);
-    }
+    });
     rhs_fwd[i] = 2.0 * bulk * s - q;
     rhs_tr[i] = r / bulk;
     diag[i] = 1.0 + w;
@@ -478,13 +442,12 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
     double change = 0.0, size = 0.0;
     for (int i = 0; i < nlocal; i++) {
       double off_f = 0.0, off_t = 0.0;
-      for (int k = first[i]; k < first[i + 1]; k++) {
-        const LinkEnd &e = ends[k];
+      for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
         double w_fwd, w_tr;
-        jacobi_weights(e, w_fwd, w_tr);
-        off_f += w_fwd * sums[e.j][0];
-        off_t += w_tr * sums[e.j][1];
-      }
+        jacobi_weights(e, swapped, w_fwd, w_tr);
+        off_f += w_fwd * sums[j][0];
+        off_t += w_tr * sums[j][1];
+      });
       next[2 * i] = (rhs_fwd[i] - off_f) / diag[i];
       next[2 * i + 1] = (rhs_tr[i] - off_t) / diag[i];
       change = std::max(
@@ -506,10 +469,8 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
 
   for (int i = 0; i < nlocal; i++) {
     double f[3] = {0.0, 0.0, 0.0}, tq[3] = {0.0, 0.0, 0.0};
-    for (int k = first[i]; k < first[i + 1]; k++) {
-      const LinkEnd &e = ends[k];
-      const MCALinkTangent t = tangent(e);
-      const int j = e.j;
+    for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
+      const MCALinkTangent t = tangent(e, swapped);
       double tension_ms = 0.0, fl[3], tql[3];
       if (t.linked) {
         tension_ms = 0.5 * (t.a_i * sums[i][0] + t.a_j * sums[j][0]);
@@ -535,7 +496,7 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
         f[c] += fl[c];
         tq[c] += tql[c];
       }
-    }
+    });
     for (int c = 0; c < 3; c++) {
       y[6 * i + c] = -f[c] / sqrt_m[i];
       y[6 * i + 3 + c] = -tq[c] / sqrt_j[i];
@@ -626,36 +587,23 @@ MCAStableTimestep::Result MCAStableTimestep::lanczos_estimate(const Input &in, C
   const int nlocal = d.nlocal;
 
   // the links that act
-  double acting = 0.0;
-  for (const LinkEnd &e : ends) acting += end_weight(in, e);
+  double acting_sum = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    for_each_end(d, i, [&](int j, const LinkEntry &, bool swapped) {
+      acting_sum += end_weight(nlocal, j, swapped);
+    });
   double acting_all = 0.0;
-  MPI_Allreduce(&acting, &acting_all, 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&acting_sum, &acting_all, 1, MPI_DOUBLE, MPI_SUM, world);
   res.nlinks = static_cast<bigint>(acting_all + 0.5);
   if (res.nlinks == 0) return res;
 
   const std::size_t n = 6 * static_cast<std::size_t>(nlocal);
-  std::vector<double> start(n);
-  {
-    // random components (from the IDs), plus the same spin of every
-    // automaton with as much weight: the fastest mode of a packing is
-    // often a spin that alternates from step to step and varies slowly
-    // across it (the spin vector is freed before the Lanczos vectors exist)
-    std::vector<double> spin(n, 0.0);
-    for (int i = 0; i < nlocal; i++)
-      for (int k = 0; k < 6; k++) {
-        start[6 * i + k] = start_component(d.tag(i), k);
-        if (k >= 3) spin[6 * i + k] = sqrt_j[i];
-      }
-    const double random_norm = sqrt(dot(start, start)), spin_norm = sqrt(dot(spin, spin));
-    for (std::size_t q = 0; q < n; q++) start[q] = start[q] / random_norm + spin[q] / spin_norm;
-  }
-  const double norm = sqrt(dot(start, start));
-  for (double &v : start) v /= norm;
-
   // the Lanczos steps; with z given, the sum of z_k v_k over its steps
   std::vector<double> alpha, beta, history;
   auto lanczos = [&](int steps, const std::vector<double> *z, std::vector<double> *ritz) {
-    std::vector<double> v = start, v_old(n, 0.0), w(n);
+    std::vector<double> v(n);
+    start_vector(in, v);
+    std::vector<double> v_old(n, 0.0), w(n);
     double beta_old = 0.0, theta = 0.0;
     int k = 0;
     while (k < steps) {
@@ -716,6 +664,34 @@ MCAStableTimestep::Result MCAStableTimestep::lanczos_estimate(const Input &in, C
 }
 
 /* ----------------------------------------------------------------------
+   random components (from the IDs), plus the same spin of every automaton
+   with as much weight: the fastest mode of a packing is often a spin that
+   alternates from step to step and varies slowly across it.  Made again
+   for each pass of the Lanczos steps (one vector less to keep)
+------------------------------------------------------------------------- */
+
+void MCAStableTimestep::start_vector(const Input &in, std::vector<double> &v) const
+{
+  const MCAHostLinks &d = in.links;
+  double spin_local = 0.0, spin_all = 0.0;
+  for (int i = 0; i < d.nlocal; i++)
+    for (int k = 0; k < 6; k++) {
+      v[6 * i + k] = start_component(d.tag(i), k);
+      const double spin = (k >= 3) ? sqrt_j[i] : 0.0;
+      spin_local += spin * spin;
+    }
+  MPI_Allreduce(&spin_local, &spin_all, 1, MPI_DOUBLE, MPI_SUM, world);
+  const double random_norm = sqrt(dot(v, v)), spin_norm = sqrt(spin_all);
+  for (int i = 0; i < d.nlocal; i++)
+    for (int k = 0; k < 6; k++) {
+      const double spin = (k >= 3) ? sqrt_j[i] : 0.0;
+      v[6 * i + k] = v[6 * i + k] / random_norm + spin / spin_norm;
+    }
+  const double norm = sqrt(dot(v, v));
+  for (double &c : v) c /= norm;
+}
+
+/* ----------------------------------------------------------------------
    the damping ratio of a mode x (a unit vector of M^1/2 u):
    u^T C u / u^T M u = 2 zeta omega, C the dashpots of the links
 ------------------------------------------------------------------------- */
@@ -724,18 +700,17 @@ double MCAStableTimestep::damping_ratio(const Input &in, Comm *comm, const std::
                                         double omega)
 {
   set_motion(in, comm, x.data());
+  const MCAHostLinks &d = in.links;
   double damping = 0.0, all = 0.0;
-  for (int i = 0; i < in.links.nlocal; i++)
-    for (int k = first[i]; k < first[i + 1]; k++) {
-      const LinkEnd &e = ends[k];
-      const double weight = end_weight(in, e);
-      if (weight == 0.0) continue;
-      const MCALinkTangent t = tangent(e);
+  for (int i = 0; i < d.nlocal; i++)
+    for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
+      const double weight = end_weight(d.nlocal, j, swapped);
+      if (weight == 0.0) return;
+      const MCALinkTangent t = tangent(e, swapped);
       double energy, dissipation;
-      tangent_energy(t, motion[i], motion[i] + 3, motion[e.j], motion[e.j] + 3, energy,
-                     dissipation);
+      tangent_energy(t, motion[i], motion[i] + 3, motion[j], motion[j] + 3, energy, dissipation);
       damping += weight * dissipation;
-    }
+    });
   MPI_Allreduce(&damping, &all, 1, MPI_DOUBLE, MPI_SUM, world);
   return omega > 0.0 ? all / (2.0 * omega) : 0.0;
 }

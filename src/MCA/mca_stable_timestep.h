@@ -100,30 +100,22 @@ class MCAStableTimestep : protected Pointers {
   // diagonal of the mean-stress systems, the next Jacobi iterate
   std::vector<double> sqrt_m, sqrt_j, rhs_fwd, rhs_tr, diag, next;
 
-  // the links of the local automata that act, kept for the Lanczos steps
-  // of one estimate in single precision (an estimate to 1e-4 needs no
-  // more; half the memory).  A link between two local automata is stored
-  // once, seen from its lower ID; a link to a ghost once, seen from the
-  // local automaton.  The other end reads the same entry swapped: its
-  // normal reversed, the two sides exchanged (exactly what its own row
-  // gives: every value below is symmetric in the sides)
+  // the links of the local automata, kept for the Lanczos steps of one
+  // estimate in single precision (an estimate to 1e-4 needs no more; half
+  // the memory), at the index of the link's row in the pool of the links
+  // fix: both ends of a link between local automata share that row, so
+  // they find the entry there.  It is made by the end that evaluates the
+  // link (the lower ID of two local automata, the local automaton of a
+  // link to a ghost); the other end reads it swapped: the normal reversed,
+  // the two sides exchanged (exactly what its own view of the row gives:
+  // every value below is symmetric in the sides)
   struct LinkEntry {
-    int flags;    // LINKED: a link (not a broken pair)
+    int flags;    // ACTS: a link, or a broken pair that pushes; LINKED: a link
     float n[3], q_i, q_j, kn, kt, kb, a_i, a_j, beta_i, beta_j, damp, inv_cn, inv_ct;
     float jacobi_fwd, jacobi_tr;    // weights of the partner's mean stress in the two systems
   };
-  enum { LINKED = 1 };
-  // an automaton's view of one of its acting links: the partner (local or
-  // ghost index) and the entry, or swapped_entry(entry) (<= -2) where it
-  // sees the entry swapped
-  struct LinkEnd {
-    int j;
-    int entry;
-  };
-  static int swapped_entry(int e) { return -2 - e; }    // its own inverse
+  enum { LINKED = 1, ACTS = 2 };
   std::vector<LinkEntry> entries;
-  std::vector<LinkEnd> ends;
-  std::vector<int> first;    // ends of local automaton i: first[i] ... first[i + 1] - 1
 
   void grow(int n);
   // the per-automaton arrays and the link table live only while an
@@ -132,15 +124,19 @@ class MCAStableTimestep : protected Pointers {
   Result lanczos_estimate(const Input &, Comm *);
   void prepare(const Input &, Comm *);
   void cache_links(const Input &);
-  // the entry an end reads, and whether it reads it swapped
-  const LinkEntry &entry(const LinkEnd &, bool &swapped) const;
-  MCAKernels::MCALinkTangent tangent(const LinkEnd &) const;
-  // the partner's mean-stress weights (forward, transposed) of an end
-  void jacobi_weights(const LinkEnd &, double &fwd, double &tr) const;
+  // f(j, entry, swapped) for each link of local automaton i that acts, in
+  // the order of its rows: the partner, the entry and whether i reads it
+  // swapped (the partner made it)
+  template <class F> void for_each_end(const MCAHostLinks &, int i, F f) const;
+  static MCAKernels::MCALinkTangent tangent(const LinkEntry &, bool swapped);
+  // the partner's mean-stress weights (forward, transposed) seen from an end
+  static void jacobi_weights(const LinkEntry &, bool swapped, double &fwd, double &tr);
   // the share of an end's link in sums over the local automata: 1 for the
   // lower ID of a local pair, 0 for the other, 1/2 for a link to a ghost
   // (counted half by each of the two processors that own its automata)
-  double end_weight(const Input &, const LinkEnd &) const;
+  static double end_weight(int nlocal, int j, bool swapped);
+  // the unit start vector of the Lanczos steps (it depends only on the IDs)
+  void start_vector(const Input &, std::vector<double> &v) const;
   // y = M^-1/2 K_s M^-1/2 x on the local automata (6 per automaton)
   void apply(const Input &, Comm *, const double *x, double *y);
   // the motion of the local automata for a mass-scaled vector, sent to the ghosts

@@ -1577,7 +1577,7 @@ void *PairMCA::extract(const char *str, int &dim)
 double PairMCA::memory_usage()
 {
   // link_count, pred_stiffness, dsmean, smean_pred, predictor sums, B;
-  // with plasticity the return's M and mean stress
+  // with plasticity the return's M and mean stress; the partner cache
   return (4.0 + (plastic() ? 2.0 : 0.0) + PS_SIZE + 9.0) * nmax * sizeof(double) +
-      2.0 * cache_rows * cache_cols * sizeof(int);
+      (double) cache_rows * cache_cols * sizeof(int);
 }

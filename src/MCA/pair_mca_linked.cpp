@@ -40,8 +40,7 @@ static const char FIX_LINKS_ID[] = "MCA_LINKS";
 
 PairMCALinked::PairMCALinked(LAMMPS *lmp, const char *label_) :
     Pair(lmp), links(nullptr), label(label_), capacity_user(0), cut_global(0.0),
-    partner_cache(nullptr), row_cache(nullptr), cache_rows(0), cache_cols(0), cache_nlocal(-1),
-    nstretched(0)
+    partner_cache(nullptr), cache_rows(0), cache_cols(0), cache_nlocal(-1), nstretched(0)
 {
 }
 
@@ -51,7 +50,6 @@ PairMCALinked::~PairMCALinked()
 {
   if (copymode) return;
   memory->destroy(partner_cache);
-  memory->destroy(row_cache);
   // the links fix is kept: a pair style command issued again (e.g. to
   // change a setting) finds the links and their history; clear removes it
 }
@@ -218,42 +216,29 @@ bool PairMCALinked::refresh_partners()
 }
 
 /* ----------------------------------------------------------------------
-   index of every link's partner (closest image) and, for a local partner,
-   the index of the same link in the partner's table; then the two ends
-   of a link between local automata share one row (FixMCALinks::share_rows)
+   index of every link's partner (closest image); then the two ends of a
+   link between local automata share one row (FixMCALinks::share_rows)
 ------------------------------------------------------------------------- */
 
 void PairMCALinked::build_partner_cache()
 {
   const int nlocal = atom->nlocal;
-  const tagint *tag = atom->tag;
   if (cache_rows < atom->nmax || cache_cols < links->maxlinks) {
     cache_rows = atom->nmax;
     cache_cols = links->maxlinks;
     allocate_partner_cache();
   }
   for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < links->nlinks[i]; m++) {
-      const int j = partner_index(i, links->partner[i][m]);
-      partner_cache[i][m] = j;
-      row_cache[i][m] = -1;
-      if (j < nlocal)
-        for (int k = 0; k < links->nlinks[j]; k++)
-          if (links->partner[j][k] == tag[i]) row_cache[i][m] = k;
-      if (j < nlocal && row_cache[i][m] < 0)
-        error->one(FLERR, "{}: automaton {} is linked to {} but not the other way", label, tag[i],
-                   tag[j]);
-    }
+    for (int m = 0; m < links->nlinks[i]; m++)
+      partner_cache[i][m] = partner_index(i, links->partner[i][m]);
   cache_nlocal = nlocal;
-  links->share_rows(nlocal, tag, partner_cache, row_cache);
+  links->share_rows(nlocal, atom->tag, partner_cache);
 }
 
 void PairMCALinked::allocate_partner_cache()
 {
   memory->destroy(partner_cache);
-  memory->destroy(row_cache);
   memory->create(partner_cache, cache_rows, cache_cols, "pair:partner_cache");
-  memory->create(row_cache, cache_rows, cache_cols, "pair:row_cache");
 }
 
 /* ----------------------------------------------------------------------
@@ -283,9 +268,9 @@ MCAHostLinks PairMCALinked::host_links() const
   d.tag_ = atom->tag;
   d.nlinks_ = links->nlinks;
   d.partner_ = partner_cache;
-  d.row_ = row_cache;
   d.slot_ = links->slot;
   d.rows_ = links->rows;
+  d.nrows = links->nrows;
   d.atom_state_ = links->atom_state;
   return d;
 }

@@ -31,15 +31,15 @@ struct MCAHostLinks {
   const tagint *tag_;
   const int *nlinks_;
   int **partner_;    // local or ghost index of each link's partner
-  int **row_;        // index of the same link in a local partner's table
   int **slot_;       // the row of each link in the pool (both ends of a local link: one row)
   double **rows_;
+  int nrows;    // rows of the pool in use
   double **atom_state_;
 
   tagint tag(int i) const { return tag_[i]; }
   int nlinks(int i) const { return nlinks_[i]; }
   int partner(int i, int m) const { return partner_[i][m]; }
-  int row(int i, int m) const { return row_[i][m]; }
+  int slot(int i, int m) const { return slot_[i][m]; }
   double *history_row(int i, int m) const { return rows_[slot_[i][m]]; }
   double &atom_state(int i, int k) const { return atom_state_[i][k]; }
 };
@@ -66,7 +66,6 @@ class PairMCALinked : public Pair {
   double cut_global;
 
   int **partner_cache;    // local or ghost index of each link's partner
-  int **row_cache;        // index of the same link in a local partner's table
   int cache_rows, cache_cols, cache_nlocal;
   bigint nstretched;    // links longer than the cutoff at the last step
 
