@@ -129,11 +129,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
     static_assert(PS_SIZE <= LS_SIZE, "the predictor's sums fit in the link sums");
     d_link_sums = MCAKokkos::double_2d<DeviceType>("pair:sums", kk_nmax, LS_SIZE);
     d_predictor_sums = d_link_sums;
-    if (need_dup()) {
-      const int copies = typename DeviceType::execution_space().concurrency();
-      d_link_copies = MCAKokkos::double_3d<DeviceType>("pair:sum_copies", copies, kk_nmax, LS_SIZE);
-      d_predictor_copies = d_link_copies;
-    }
+    // (the copies: count_links_kk, where their rows are given)
   }
   if ((eflag_atom || vflag_atom) && atom->nmax > tally_nmax) {
     tally_nmax = atom->nmax;
@@ -335,6 +331,20 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::count_links_kk()
   count.d = views();
   count.chunk_size = chunk_size;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), count);
+  if (chunk_size > 0) {
+    // a row of the copies for each automaton that other chunks add to
+    // (those near the chunks' borders); the copies are all zero between
+    // the passes, so their rows may be given again
+    MCAForeignRows<DeviceType> rows;
+    rows.foreign = d_foreign;
+    int nforeign = 0;
+    Kokkos::parallel_scan(Kokkos::RangePolicy<DeviceType>(0, nlocal), rows, nforeign);
+    const int copies = typename DeviceType::execution_space().concurrency();
+    if (static_cast<int>(d_link_copies.extent(0)) != copies ||
+        nforeign > static_cast<int>(d_link_copies.extent(1)))
+      d_link_copies = MCAKokkos::double_3d<DeviceType>("pair:sum_copies", copies,
+                                                       nforeign + nforeign / 4 + 1, LS_SIZE);
+  }
   forward_comm_stage(STAGE_COUNT);
 }
 
@@ -350,9 +360,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::predict_mean_stress(
   if (need_dup()) {
     MCAChunkedFor<MCAPredictorLinks<DeviceType, MCAChunkSums<DeviceType>>> chunked;
     chunked.pass.d = d;
-    chunked.pass.sums.sums = d_predictor_sums;
-    chunked.pass.sums.copies = d_predictor_copies;
-    chunked.pass.sums.chunk_size = chunk_size;
+    chunked.pass.sums = chunk_sums();
     chunked.nlocal = nlocal;
     chunked.chunk_size = chunk_size;
     Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, chunks()), chunked);
@@ -365,7 +373,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::predict_mean_stress(
 
   MCAPredictorFinish<DeviceType> finish;
   finish.d = d;
-  if (need_dup()) finish.copies = d_predictor_copies;
+  if (need_dup()) finish.copies = d_link_copies;
   finish.setup_pass = (update->setupflag != 0);
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), finish);
   forward_comm_stage(STAGE_MEAN);
@@ -384,6 +392,16 @@ template <class DeviceType> bool PairMCAKokkos<DeviceType>::need_dup() const
 template <class DeviceType> int PairMCAKokkos<DeviceType>::chunks() const
 {
   return (atom->nlocal + chunk_size - 1) / chunk_size;
+}
+
+template <class DeviceType> MCAChunkSums<DeviceType> PairMCAKokkos<DeviceType>::chunk_sums() const
+{
+  MCAChunkSums<DeviceType> sums;
+  sums.sums = d_link_sums;
+  sums.copies = d_link_copies;
+  sums.foreign = d_foreign;
+  sums.chunk_size = chunk_size;
+  return sums;
 }
 
 /* ----------------------------------------------------------------------
@@ -425,9 +443,7 @@ void PairMCAKokkos<DeviceType>::link_kernel(bool commit, MCALinkSums &sums)
   if (need_dup()) {
     if (atom_tally) dup_tally.reset();
     Pass<DeviceType, MCAChunkSums<DeviceType>, dup_type> pass;
-    pass.sums.sums = d_link_sums;
-    pass.sums.copies = d_link_copies;
-    pass.sums.chunk_size = chunk_size;
+    pass.sums = chunk_sums();
     pass.tally.tally = dup_tally;
     run_link_kernel(pass, commit, sums);
     if (atom_tally) Kokkos::Experimental::contribute(d_atom_tally, dup_tally);
@@ -453,9 +469,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::plastic_return(bool 
   if (need_dup()) {
     MCAChunkedFor<MCATrialPass<DeviceType, MCAChunkSums<DeviceType>>> chunked;
     chunked.pass.d = d;
-    chunked.pass.sums.sums = d_link_sums;
-    chunked.pass.sums.copies = d_link_copies;
-    chunked.pass.sums.chunk_size = chunk_size;
+    chunked.pass.sums = chunk_sums();
     chunked.pass.flags = flags;
     chunked.nlocal = nlocal;
     chunked.chunk_size = chunk_size;
@@ -634,8 +648,8 @@ template <class DeviceType> double PairMCAKokkos<DeviceType>::memory_usage()
   const double copies = Kokkos::SpaceAccessibility<Kokkos::HostSpace, memory_space>::accessible
       ? typename DeviceType::execution_space().concurrency()
       : 0.0;
-  bytes += ((plastic() ? 5.0 : 3.0) + 6.0 + (1.0 + (need_dup() ? copies : 0.0)) * LS_SIZE) *
-          kk_nmax * sizeof(double) +
+  bytes += ((plastic() ? 5.0 : 3.0) + 6.0 + LS_SIZE) * kk_nmax * sizeof(double) +
+      (need_dup() ? copies : 0.0) * d_link_copies.extent(1) * LS_SIZE * sizeof(double) +
       2.0 * kk_nmax * sizeof(int);
   return bytes;
 }

@@ -30,6 +30,7 @@ PairStyle(mca/kk/host,PairMCAKokkos<LMPHostType>);
 namespace LAMMPS_NS {
 
 template <class DeviceType> struct MCAPairViews;
+template <class DeviceType> struct MCAChunkSums;
 struct MCALinkSums;
 
 // ScatterViews of the per-automaton sums: direct (one host thread: plain
@@ -109,15 +110,19 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   // predictor, of the link pass and of the per-atom energy and virial
   typedef typename MCAScatter<DeviceType>::direct direct_type;
   typedef typename MCAScatter<DeviceType>::duplicated dup_type;
-  // d_foreign: 1 where a partner in another chunk adds to the automaton
+  // d_foreign: where a partner in another chunk adds to the automaton,
+  // its row in the copies below (else -1)
   MCAKokkos::int_1d<DeviceType> d_link_count, d_foreign;
   MCAKokkos::double_2d<DeviceType> d_fabric, d_predictor_sums, d_link_sums, d_atom_tally;
   // several host threads: per-chunk copies of the contributions to
-  // automata of other chunks (chunk_size automata per chunk)
-  MCAKokkos::double_3d<DeviceType> d_predictor_copies, d_link_copies;
+  // automata of other chunks (chunk_size automata per chunk), a row for
+  // each automaton that takes such contributions
+  MCAKokkos::double_3d<DeviceType> d_link_copies;
   dup_type dup_tally;
   bool need_dup() const;
   int chunks() const;
+  // the chunked sums of the predictor and link passes
+  MCAChunkSums<DeviceType> chunk_sums() const;
   template <class Pass> void run_link_kernel(Pass &, bool commit, struct MCALinkSums &);
   // a kernel over the links with the link sums: Pass<DeviceType, Sums, TallyScatter>
   template <template <class, class, class> class Pass>

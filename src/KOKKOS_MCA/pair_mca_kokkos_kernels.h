@@ -170,6 +170,21 @@ template <class DeviceType> struct MCACountLinks {
   }
 };
 
+// the rows of the copies: where MCACountLinks marked an automaton (1),
+// the number of marked automata before it; else -1
+template <class DeviceType> struct MCAForeignRows {
+  typedef DeviceType device_type;
+  typedef int value_type;
+  MCAKokkos::int_1d<DeviceType> foreign;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int &count, const bool final) const
+  {
+    const int marked = foreign(i);
+    if (final) foreign(i) = marked ? count : -1;
+    count += marked;
+  }
+};
+
 /* ----------------------------------------------------------------------
    where a kernel adds what a link gives its two automata: the automaton
    it runs for (own) and a local partner.  DirectSums: into the sums
@@ -205,6 +220,7 @@ template <class DeviceType> struct MCADirectSums {
 template <class DeviceType> struct MCAChunkSums {
   MCAKokkos::double_2d<DeviceType> sums;
   MCAKokkos::double_3d<DeviceType> copies;
+  MCAKokkos::int_1d<DeviceType> foreign;    // an automaton's row in the copies
   int chunk_size;
   struct Thread {
     double *own;    // the automaton's row of the sums
@@ -227,7 +243,8 @@ template <class DeviceType> struct MCAChunkSums {
   // the row a partner's part goes to (rows are contiguous: LayoutRight)
   KOKKOS_INLINE_FUNCTION double *partner_of(Thread &thread, int j) const
   {
-    return (j >= thread.first && j < thread.last) ? &sums(j, 0) : &copies(thread.chunk, j, 0);
+    return (j >= thread.first && j < thread.last) ? &sums(j, 0)
+                                                  : &copies(thread.chunk, foreign(j), 0);
   }
   KOKKOS_INLINE_FUNCTION void partner(Thread &, double *row, int k, double value) const
   {
@@ -280,11 +297,12 @@ KOKKOS_INLINE_FUNCTION void load_sums(const MCAKokkos::double_2d<DeviceType> &su
     out[k] = sums(i, k);
     sums(i, k) = 0.0;
   }
-  if (copies.extent(0) == 0 || !foreign(i)) return;
+  if (copies.extent(0) == 0 || foreign(i) < 0) return;
+  const int row = foreign(i);
   for (int t = 0; t < static_cast<int>(copies.extent(0)); t++)
     for (int k = 0; k < n; k++) {
-      out[k] += copies(t, i, k);
-      copies(t, i, k) = 0.0;
+      out[k] += copies(t, row, k);
+      copies(t, row, k) = 0.0;
     }
 }
 
