@@ -122,6 +122,8 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
     }
     d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nmax);
     d_foreign = MCAKokkos::int_1d<DeviceType>("pair:foreign", kk_nmax);
+    // (no row in the copies until count_links_kk gives the rows)
+    Kokkos::deep_copy(d_foreign, -1);
     d_fabric = MCAKokkos::double_2d<DeviceType>("pair:fabric", kk_nmax, 6);
     // the predictor and the link passes share their sums (and copies): the
     // predictor's are read (and left zero) before the link pass adds to

@@ -178,6 +178,7 @@ void MCAStableTimestep::release()
   for (auto *v : {&sqrt_m, &sqrt_j, &rhs_fwd, &rhs_tr, &diag, &next})
     std::vector<double>().swap(*v);
   std::vector<LinkEntry>().swap(entries);
+  std::vector<JacobiEntry>().swap(jacobi);
 }
 
 /* ----------------------------------------------------------------------
@@ -284,8 +285,8 @@ void MCAStableTimestep::cache_links(const Input &in)
 {
   const MCAHostLinks &d = in.links;
   const int nlocal = d.nlocal;
-  LinkEntry none{};
-  entries.assign(d.nrows, none);
+  entries.assign(d.nrows, LinkEntry{});
+  jacobi.assign(d.nrows, JacobiEntry{});
   MCALinkTangent t;
   int j;
   for (int i = 0; i < nlocal; i++)
@@ -315,17 +316,20 @@ void MCAStableTimestep::cache_links(const Input &in)
       const double gamma_i = dot3(fn, t.n) / 3.0;
       fabric_times(finv[j], t.n, fn);
       const double gamma_j = dot3(fn, t.n) / 3.0;
-      e.jacobi_fwd = t.linked ? gamma_i * t.a_j / (t.area * in.material[in.type[j]].bulk) : 0.0;
-      e.jacobi_tr = t.linked ? gamma_j * t.a_i / (t.area * in.material[in.type[i]].bulk) : 0.0;
+      JacobiEntry &w = jacobi[d.slot(i, m)];
+      w.fwd = t.linked ? gamma_i * t.a_j / (t.area * in.material[in.type[j]].bulk) : 0.0;
+      w.tr = t.linked ? gamma_j * t.a_i / (t.area * in.material[in.type[i]].bulk) : 0.0;
     }
 }
 
-template <class F> void MCAStableTimestep::for_each_end(const MCAHostLinks &d, int i, F f) const
+template <class Entry, class F>
+void MCAStableTimestep::for_each_end(const MCAHostLinks &d, int i, const std::vector<Entry> &table,
+                                     F f) const
 {
   for (int m = 0; m < d.nlinks(i); m++) {
     const int j = d.partner(i, m);
-    const LinkEntry &e = entries[d.slot(i, m)];
-    if (e.flags & ACTS) f(j, e, partner_evaluates(d, i, j));
+    const Entry &e = table[d.slot(i, m)];
+    if (e.acts()) f(j, e, partner_evaluates(d, i, j));
   }
 }
 
@@ -350,10 +354,10 @@ MCALinkTangent MCAStableTimestep::tangent(const LinkEntry &e, bool swapped)
   return t;
 }
 
-void MCAStableTimestep::jacobi_weights(const LinkEntry &e, bool swapped, double &fwd, double &tr)
+void MCAStableTimestep::jacobi_weights(const JacobiEntry &e, bool swapped, double &fwd, double &tr)
 {
-  fwd = swapped ? e.jacobi_tr : e.jacobi_fwd;
-  tr = swapped ? e.jacobi_fwd : e.jacobi_tr;
+  fwd = swapped ? e.tr : e.fwd;
+  tr = swapped ? e.fwd : e.tr;
 }
 
 double MCAStableTimestep::dot(const std::vector<double> &a, const std::vector<double> &b) const
@@ -409,7 +413,7 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
     if (!(predicted[i] > 0.0)) continue;
     const double bulk = in.material[in.type[i]].bulk;
     double s = 0.0, r = 0.0, q = 0.0, w = 0.0;
-    for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
+    for_each_end(d, i, entries, [&](int j, const LinkEntry &e, bool swapped) {
       const MCALinkTangent t = tangent(e, swapped);
       if (!t.linked) return;
       double dr, slip[3], fn[3];
@@ -442,7 +446,7 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
     double change = 0.0, size = 0.0;
     for (int i = 0; i < nlocal; i++) {
       double off_f = 0.0, off_t = 0.0;
-      for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
+      for_each_end(d, i, jacobi, [&](int j, const JacobiEntry &e, bool swapped) {
         double w_fwd, w_tr;
         jacobi_weights(e, swapped, w_fwd, w_tr);
         off_f += w_fwd * sums[j][0];
@@ -469,7 +473,7 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
 
   for (int i = 0; i < nlocal; i++) {
     double f[3] = {0.0, 0.0, 0.0}, tq[3] = {0.0, 0.0, 0.0};
-    for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
+    for_each_end(d, i, entries, [&](int j, const LinkEntry &e, bool swapped) {
       const MCALinkTangent t = tangent(e, swapped);
       double tension_ms = 0.0, fl[3], tql[3];
       if (t.linked) {
@@ -589,7 +593,7 @@ MCAStableTimestep::Result MCAStableTimestep::lanczos_estimate(const Input &in, C
   // the links that act
   double acting_sum = 0.0;
   for (int i = 0; i < nlocal; i++)
-    for_each_end(d, i, [&](int j, const LinkEntry &, bool swapped) {
+    for_each_end(d, i, entries, [&](int j, const LinkEntry &, bool swapped) {
       acting_sum += end_weight(nlocal, j, swapped);
     });
   double acting_all = 0.0;
@@ -703,7 +707,7 @@ double MCAStableTimestep::damping_ratio(const Input &in, Comm *comm, const std::
   const MCAHostLinks &d = in.links;
   double damping = 0.0, all = 0.0;
   for (int i = 0; i < d.nlocal; i++)
-    for_each_end(d, i, [&](int j, const LinkEntry &e, bool swapped) {
+    for_each_end(d, i, entries, [&](int j, const LinkEntry &e, bool swapped) {
       const double weight = end_weight(d.nlocal, j, swapped);
       if (weight == 0.0) return;
       const MCALinkTangent t = tangent(e, swapped);

@@ -112,10 +112,21 @@ class MCAStableTimestep : protected Pointers {
   struct LinkEntry {
     int flags;    // ACTS: a link, or a broken pair that pushes; LINKED: a link
     float n[3], q_i, q_j, kn, kt, kb, a_i, a_j, beta_i, beta_j, damp, inv_cn, inv_ct;
-    float jacobi_fwd, jacobi_tr;    // weights of the partner's mean stress in the two systems
+    bool acts() const { return (flags & ACTS) != 0; }
   };
   enum { LINKED = 1, ACTS = 2 };
   std::vector<LinkEntry> entries;
+  // what the Jacobi steps of the mean-stress systems read of a link, in a
+  // table of its own at the same places (their loop, the most repeated of
+  // the estimate, streams 8 bytes per link instead of the entry).  A link
+  // that is not linked has weights 0, and adding 0 x s (s finite) to a sum
+  // that starts at +0 leaves it as it is, bit for bit: the steps take every
+  // end and need no test
+  struct JacobiEntry {
+    float fwd, tr;    // weights of the partner's mean stress in the two systems
+    bool acts() const { return true; }
+  };
+  std::vector<JacobiEntry> jacobi;
 
   void grow(int n);
   // the per-automaton arrays and the link table live only while an
@@ -125,12 +136,13 @@ class MCAStableTimestep : protected Pointers {
   void prepare(const Input &, Comm *);
   void cache_links(const Input &);
   // f(j, entry, swapped) for each link of local automaton i that acts, in
-  // the order of its rows: the partner, the entry and whether i reads it
-  // swapped (the partner made it)
-  template <class F> void for_each_end(const MCAHostLinks &, int i, F f) const;
+  // the order of its rows: the partner, the link's entry in table (entries
+  // or jacobi) and whether i reads it swapped (the partner made it)
+  template <class Entry, class F>
+  void for_each_end(const MCAHostLinks &, int i, const std::vector<Entry> &table, F f) const;
   static MCAKernels::MCALinkTangent tangent(const LinkEntry &, bool swapped);
   // the partner's mean-stress weights (forward, transposed) seen from an end
-  static void jacobi_weights(const LinkEntry &, bool swapped, double &fwd, double &tr);
+  static void jacobi_weights(const JacobiEntry &, bool swapped, double &fwd, double &tr);
   // the share of an end's link in sums over the local automata: 1 for the
   // lower ID of a local pair, 0 for the other, 1/2 for a link to a ghost
   // (counted half by each of the two processors that own its automata)
