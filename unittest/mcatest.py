@@ -17,6 +17,7 @@ build named by MCA_TEST_KOKKOS (default kokkos).
 import os
 import pathlib
 import subprocess
+import tempfile
 
 import numpy as np
 import pytest
@@ -92,6 +93,14 @@ def mpi_environment():
         env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
     env.setdefault("OMPI_MCA_rmaps_base_oversubscribe", "1")
     env.setdefault("OMP_NUM_THREADS", "1")
+    # a session directory of Open MPI per pytest worker: on a fresh machine
+    # the first runs of two workers, started at the same moment, race to
+    # make the shared one and one fails ("mkdir ... /tmp/ompi.HOST.UID: File
+    # exists", orte_session_dir)
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "main")
+    session = pathlib.Path(tempfile.gettempdir()) / f"mca-ompi-{worker}"
+    session.mkdir(exist_ok=True)
+    env.setdefault("OMPI_MCA_orte_tmpdir_base", str(session))
     return env
 
 
