@@ -39,7 +39,7 @@ using namespace MCAKernels;
 template <class DeviceType>
 PairMCAKokkos<DeviceType>::PairMCAKokkos(LAMMPS *lmp) :
     MCAKokkos::RequiresKokkos(lmp, "Pair style mca/kk"), PairMCA(lmp), avecKK(nullptr),
-    linksKK(nullptr), kk_nmax(0), tally_nmax(0), chunk_size(0)
+    linksKK(nullptr), kk_nmax(0), kk_nsums(0), tally_nmax(0), chunk_size(0)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -120,16 +120,22 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
       memoryKK->create_kokkos(k_return_scale, return_scale, kk_nmax, "pair:return_scale");
       memoryKK->create_kokkos(k_return_smean, return_smean, kk_nmax, "pair:return_smean");
     }
-    d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nmax);
-    d_foreign = MCAKokkos::int_1d<DeviceType>("pair:foreign", kk_nmax);
+  }
+  // the arrays of the local automata only (a pass adds to a local partner,
+  // never to a ghost), grown with some room: the number of local automata
+  // changes at each reneighboring (then count_links_kk runs next)
+  if (atom->nlocal > kk_nsums) {
+    kk_nsums = atom->nlocal + atom->nlocal / 64 + 16;
+    d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nsums);
+    d_foreign = MCAKokkos::int_1d<DeviceType>("pair:foreign", kk_nsums);
     // (no row in the copies until count_links_kk gives the rows)
     Kokkos::deep_copy(d_foreign, -1);
-    d_fabric = MCAKokkos::double_2d<DeviceType>("pair:fabric", kk_nmax, 6);
+    d_fabric = MCAKokkos::double_2d<DeviceType>("pair:fabric", kk_nsums, 6);
     // the predictor and the link passes share their sums (and copies): the
     // predictor's are read (and left zero) before the link pass adds to
     // them, and it uses the first PS_SIZE columns only
     static_assert(PS_SIZE <= LS_SIZE, "the predictor's sums fit in the link sums");
-    d_link_sums = MCAKokkos::double_2d<DeviceType>("pair:sums", kk_nmax, LS_SIZE);
+    d_link_sums = MCAKokkos::double_2d<DeviceType>("pair:sums", kk_nsums, LS_SIZE);
     d_predictor_sums = d_link_sums;
     // (the copies: count_links_kk, where their rows are given)
   }
@@ -643,16 +649,16 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::estimate_forward_com
 template <class DeviceType> double PairMCAKokkos<DeviceType>::memory_usage()
 {
   double bytes = PairMCA::memory_usage();
-  // per automaton: 3 communicated values (5 with plasticity), fabric, the
-  // sums the two passes share and their copies (one per thread on the
-  // host), link count and flag
+  // per automaton: 3 communicated values (5 with plasticity); per local
+  // automaton: fabric, the sums the two passes share, link count and row
+  // in the copies of the sums (one copy per thread on the host)
   typedef typename DeviceType::memory_space memory_space;
   const double copies = Kokkos::SpaceAccessibility<Kokkos::HostSpace, memory_space>::accessible
       ? typename DeviceType::execution_space().concurrency()
       : 0.0;
-  bytes += ((plastic() ? 5.0 : 3.0) + 6.0 + LS_SIZE) * kk_nmax * sizeof(double) +
-      (need_dup() ? copies : 0.0) * d_link_copies.extent(1) * LS_SIZE * sizeof(double) +
-      2.0 * kk_nmax * sizeof(int);
+  bytes += (plastic() ? 5.0 : 3.0) * kk_nmax * sizeof(double) +
+      ((6.0 + LS_SIZE) * sizeof(double) + 2.0 * sizeof(int)) * kk_nsums +
+      (need_dup() ? copies : 0.0) * d_link_copies.extent(1) * LS_SIZE * sizeof(double);
   return bytes;
 }
 

@@ -141,7 +141,7 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   // per-atom energy and virial
   MCAKokkos::PairTally tally;
 
-  int kk_nmax, tally_nmax, chunk_size;
+  int kk_nmax, kk_nsums, tally_nmax, chunk_size;    // kk_nsums: rows of the local arrays
 
   void grow_kk_peratom();
   void count_links_kk();

@@ -243,7 +243,8 @@ void FixMCALinks::reserve_rows(bigint n)
    nothing moves
 ------------------------------------------------------------------------- */
 
-void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_index)
+bool FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_index,
+                             tagint *apart)
 {
   to_host();
   const MCALinkOwners owners{nlocal, tag};
@@ -294,7 +295,14 @@ void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
       for (int m = 0; m < nlinks[i]; m++)
         if (evaluates(i, m)) slot[i][m] = place[slot[i][m]];
   }
-  // (every link to a local partner is in the partner's table too)
+  // (every link to a local partner is in the partner's table too, and
+  // the partner sees this automaton, not a periodic image of it: else the
+  // two would each take the link for one the other evaluates, or for one
+  // to a ghost, and its forces would be lost or counted twice.  Closest
+  // images differ only where the image of the partner that continues the
+  // link is not a ghost atom here, i.e. the link is longer than the ghost
+  // cutoff, or where the link is half a periodic box length, whose two
+  // images are equally close up to round-off: the caller stops the run)
   for (int i = 0; i < nlocal; i++)
     for (int m = 0; m < nlinks[i]; m++) {
       const int j = partner_index[i][m];
@@ -304,6 +312,11 @@ void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
       if (k == nlinks[j])
         error->one(FLERR, "Fix MCA_LINKS: automaton {} is linked to {} but not the other way",
                    tag[i], tag[j]);
+      if (partner_index[j][k] != i) {
+        apart[0] = tag[i];
+        apart[1] = tag[j];
+        return false;
+      }
       if (!evaluates(i, m)) slot[i][m] = slot[j][k];
     }
   nrows = kept;
@@ -311,6 +324,7 @@ void FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
   // restart file, are given back)
   if (maxrows > 2 * nrows + 1024) grow_pool(nrows + nrows / 4);
   host_changed();
+  return true;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -88,8 +88,11 @@ class FixMCALinks : public Fix {
   // one row for each link between local atoms (the row of the end that
   // evaluates it: partner_index[i][m] >= nlocal or the lower ID), the
   // rows in the order of those ends.  After every reneighboring: the box
-  // may have remapped a local partner's closest image to a ghost atom
-  void share_rows(int nlocal, const tagint *tag, int *const *partner_index);
+  // may have remapped a local partner's closest image to a ghost atom.
+  // False, with the IDs of i and j in apart, where local automaton i sees
+  // local j but j sees another image of i: the link is lost (longer than
+  // the ghost cutoff, or half a periodic box length)
+  bool share_rows(int nlocal, const tagint *tag, int *const *partner_index, tagint *apart);
 
   void set_capacity(int);
   // drop link m of local atom i: the last link takes its place (host)

@@ -138,6 +138,25 @@ namespace MCAKernels {
     if (damping) t.damp = area * series_viscosity(m_i.viscosity, m_j.viscosity, t.q_i, t.q_j);
   }
 
+  // the link seen from its other end: the normal reversed, the sides
+  // exchanged.  That is link_tangent of the other end bit for bit: c_n,
+  // c_t, kn, kt and kb are sums and products of two terms, one per side,
+  // which IEEE arithmetic gives alike in either order, and the predictor
+  // weights are even in n
+  MCA_INLINE void swap_sides(MCALinkTangent &t)
+  {
+    auto swap = [](double &a, double &b) {
+      const double c = a;
+      a = b;
+      b = c;
+    };
+    for (int k = 0; k < 3; k++) t.n[k] = -t.n[k];
+    swap(t.q_i, t.q_j);
+    swap(t.a_i, t.a_j);
+    swap(t.beta_i, t.beta_j);
+    swap(t.w_i, t.w_j);
+  }
+
   // the length change of the link for displacements u_i, u_j
   MCA_INLINE double tangent_stretch(const MCALinkTangent &t, const double *u_i, const double *u_j)
   {

@@ -518,16 +518,34 @@ MCAStableTimestep::Monitor MCAStableTimestep::monitor(const Input &in)
   for (int i = 0; i < atom->nmax; i++) predicted[i] = 0.0;
   std::vector<double> trace(d.nlocal, 0.0);
   double largest[NMONITOR + 1] = {0.0, 0.0, 0.0, 0.0, 0.0};
+  auto meet = [&](const MCALinkTangent &t, int i) {
+    const double m = in.rmass[i], jn = in.inertia[i];
+    const double values[NMONITOR] = {t.kn / m, t.kt / m, t.kt * t.q_i * t.q_i / jn, t.kb / jn};
+    for (int c = 0; c < NMONITOR; c++) largest[c] = std::max(largest[c], values[c]);
+    return tangent_trace(t, m, jn);
+  };
+  // each link's tangent once, by the end that evaluates it; a local
+  // partner meets it with the sides exchanged (swap_sides: every value is
+  // symmetric in the sides, so that is what its own view of the row gives,
+  // bit for bit).  Each end's part of its trace waits at the link's row
+  // (the end that evaluates, then the partner) and is added in the order
+  // of the end's links
+  std::vector<double> row_trace(2 * static_cast<std::size_t>(d.nrows));
   MCALinkTangent t;
   int j;
-  for (int i = 0; i < d.nlocal; i++) {
-    const double m = in.rmass[i], jn = in.inertia[i];
+  for (int i = 0; i < d.nlocal; i++)
     for (int k = 0; k < d.nlinks(i); k++) {
+      if (partner_evaluates(d, i, d.partner(i, k))) continue;
       tangent_of(in, i, k, j, t);
-      trace[i] += tangent_trace(t, m, jn);
-      const double values[NMONITOR] = {t.kn / m, t.kt / m, t.kt * t.q_i * t.q_i / jn, t.kb / jn};
-      for (int c = 0; c < NMONITOR; c++) largest[c] = std::max(largest[c], values[c]);
+      const int s = d.slot(i, k);
+      row_trace[2 * s] = meet(t, i);
+      if (j >= d.nlocal) continue;
+      swap_sides(t);
+      row_trace[2 * s + 1] = meet(t, j);
     }
+  for (int i = 0; i < d.nlocal; i++) {
+    for (int k = 0; k < d.nlinks(i); k++)
+      trace[i] += row_trace[2 * d.slot(i, k) + (partner_evaluates(d, i, d.partner(i, k)) ? 1 : 0)];
     largest[NMONITOR] = std::max(largest[NMONITOR], trace[i]);
   }
   double all_largest[NMONITOR + 1];

@@ -135,9 +135,10 @@ class MCAStableTimestep : protected Pointers {
   Result lanczos_estimate(const Input &, Comm *);
   void prepare(const Input &, Comm *);
   void cache_links(const Input &);
-  // f(j, entry, swapped) for each link of local automaton i that acts, in
-  // the order of its rows: the partner, the link's entry in table (entries
-  // or jacobi) and whether i reads it swapped (the partner made it)
+  // f(j, entry, swapped) for each link of local automaton i whose entry in
+  // table (entries or jacobi) acts (a JacobiEntry always does), in the
+  // order of its rows: the partner, the entry and whether i reads it
+  // swapped (the partner made it)
   template <class Entry, class F>
   void for_each_end(const MCAHostLinks &, int i, const std::vector<Entry> &table, F f) const;
   static MCAKernels::MCALinkTangent tangent(const LinkEntry &, bool swapped);

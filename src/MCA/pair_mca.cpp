@@ -100,7 +100,7 @@ PairMCA::HostData PairMCA::host_data()
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairMCALinked(lmp, "Pair mca"), materials(lmp), link_allowed(nullptr), link_tolerance(nullptr),
     link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr), smean_pred(nullptr),
-    predictor_sums(nullptr), bmat(nullptr), return_scale(nullptr), return_smean(nullptr),
+    return_scale(nullptr), return_smean(nullptr), nsums(0), predictor_sums(nullptr), bmat(nullptr),
     avec(nullptr), contact_list(nullptr), restart_contacts(0), restart_healing(0),
     stability(nullptr), dt_monitor(), dt_estimated(0), dt_warned_ratio(0.0), links_changed(0)
 {
@@ -140,6 +140,8 @@ PairMCA::~PairMCA()
     memory->destroy(link_tolerance);
   }
   destroy_peratom();
+  memory->destroy(predictor_sums);
+  memory->destroy(bmat);
   delete stability;
 }
 
@@ -946,8 +948,6 @@ void PairMCA::grow_peratom()
   nmax = atom->nmax;
   destroy_peratom();
   memory->create(pred_stiffness, nmax, "pair:pred_stiffness");
-  memory->create(predictor_sums, nmax, PS_SIZE, "pair:predictor_sums");
-  memory->create(bmat, nmax, 9, "pair:bmat");
   memory->create(link_count, nmax, "pair:link_count");
   memory->create(dsmean, nmax, "pair:dsmean");
   memory->create(smean_pred, nmax, "pair:smean_pred");
@@ -964,10 +964,24 @@ void PairMCA::destroy_peratom()
   memory->destroy(pred_stiffness);
   memory->destroy(dsmean);
   memory->destroy(smean_pred);
-  memory->destroy(predictor_sums);
-  memory->destroy(bmat);
   memory->destroy(return_scale);
   memory->destroy(return_smean);
+}
+
+/* ----------------------------------------------------------------------
+   the sums for the local automata, grown with some room (the number of
+   local automata changes at each reneighboring); their values do not
+   last from one step to the next
+------------------------------------------------------------------------- */
+
+void PairMCA::grow_sums()
+{
+  if (atom->nlocal <= nsums) return;
+  nsums = atom->nlocal + atom->nlocal / 64 + 16;
+  memory->destroy(predictor_sums);
+  memory->destroy(bmat);
+  memory->create(predictor_sums, nsums, PS_SIZE, "pair:predictor_sums");
+  memory->create(bmat, nsums, 9, "pair:bmat");
 }
 
 /* ----------------------------------------------------------------------
@@ -1012,6 +1026,7 @@ void PairMCA::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   if (!links->created) error->all(FLERR, "Pair mca: compute() before the links were made");
   grow_peratom();
+  grow_sums();
 
   // link states (and so the predictor stiffness, sent to the ghost atoms)
   // change only when the partners are found again, or when links broke at
@@ -1576,8 +1591,8 @@ void *PairMCA::extract(const char *str, int &dim)
 
 double PairMCA::memory_usage()
 {
-  // link_count, pred_stiffness, dsmean, smean_pred, predictor sums, B;
-  // with plasticity the return's M and mean stress; the partner cache
-  return (4.0 + (plastic() ? 2.0 : 0.0) + PS_SIZE + 9.0) * nmax * sizeof(double) +
-      (double) cache_rows * cache_cols * sizeof(int);
+  // pred_stiffness, dsmean, smean_pred and link_count; with plasticity
+  // the return's M and mean stress; the sums; the partner cache
+  return ((3.0 + (plastic() ? 2.0 : 0.0)) * sizeof(double) + sizeof(int)) * nmax +
+      (PS_SIZE + 9.0) * nsums * sizeof(double) + (double) cache_rows * cache_cols * sizeof(int);
 }

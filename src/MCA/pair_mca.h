@@ -84,16 +84,23 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
 
   // per-atom work arrays (local + ghost)
   int nmax;
-  int *link_count;            // interacting links of each local automaton
-  double *pred_stiffness;     // its stiffness in the mean-stress predictor (communicated)
-  double *dsmean;             // mean-stress increment the normal law applies this step
-  double *smean_pred;         // predicted mean stress of this step
+  int *link_count;           // interacting links of each local automaton
+  double *pred_stiffness;    // its stiffness in the mean-stress predictor (communicated)
+  double *dsmean;            // mean-stress increment the normal law applies this step
+  double *smean_pred;        // predicted mean stress of this step
+  double *return_scale;      // plasticity: return factor M of each automaton (communicated)
+  double *return_smean;      // and the mean stress of its trial (communicated)
+  void destroy_peratom();
+  // the sums of the passes, for the local automata only (a pass adds to a
+  // local partner, never to a ghost; nsums rows).  Two arrays: B's dense
+  // rows of 9 keep the link pass on fewer cache lines than rows shared
+  // with the predictor's sums, whose strain moments are dead by then (one
+  // array of 15 columns cost 3-4 % of the step at 265721 automata)
+  int nsums;
   double **predictor_sums;    // predictor pass: PS_* columns (mca_link_passes.h); the
                               // first six, sum n n^T, are the fabric tensor of the stress
   double **bmat;              // link pass: sum of T n^T (LS_BMAT columns)
-  double *return_scale;       // plasticity: return factor M of each automaton (communicated)
-  double *return_smean;       // and the mean stress of its trial (communicated)
-  void destroy_peratom();
+  void grow_sums();
   // what the forward communication sends: the predictor stiffness, the
   // mean-stress increment and prediction, or the return of the automata
   // or (fracture) the stress and plastic strain of the step

@@ -222,9 +222,10 @@ bool PairMCALinked::refresh_partners()
 
 void PairMCALinked::build_partner_cache()
 {
+  // (rows for the local automata only, with some room)
   const int nlocal = atom->nlocal;
-  if (cache_rows < atom->nmax || cache_cols < links->maxlinks) {
-    cache_rows = atom->nmax;
+  if (cache_rows < nlocal || cache_cols < links->maxlinks) {
+    cache_rows = nlocal + nlocal / 64 + 16;
     cache_cols = links->maxlinks;
     allocate_partner_cache();
   }
@@ -232,7 +233,14 @@ void PairMCALinked::build_partner_cache()
     for (int m = 0; m < links->nlinks[i]; m++)
       partner_cache[i][m] = partner_index(i, links->partner[i][m]);
   cache_nlocal = nlocal;
-  links->share_rows(nlocal, atom->tag, partner_cache);
+  tagint apart[2];
+  if (!links->share_rows(nlocal, atom->tag, partner_cache, apart))
+    error->one(FLERR,
+               "{}: the link of automaton {} to automaton {} is lost: {} sees another periodic "
+               "image of {} (the link is longer than the communication cutoff {}, or half a "
+               "periodic box length){}",
+               label, apart[0], apart[1], apart[1], apart[0], cut_global + neighbor->skin,
+               timestep_hint());
 }
 
 void PairMCALinked::allocate_partner_cache()

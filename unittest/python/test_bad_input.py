@@ -63,6 +63,25 @@ pair_coeff      * * E 70e9 nu 0.3 rho 2700
 run             0
 """
 
+# a link of length 0.75 made in a periodic box of 3, then the box made 1.5
+HALF_BOX_LINK = """
+units           si
+atom_style      mca
+atom_modify     map array
+boundary        p f f
+region          box block 0 3 -4 4 -4 4 units box
+create_box      1 box
+create_atoms    1 single 0.18521411864172255 0 0 units box
+create_atoms    1 single 0.9352141186417225 0 0 units box
+mca_set         all packing fcc radius 0.375
+comm_modify     vel yes
+pair_style      mca
+pair_coeff      * * E 70e9 nu 0.3 rho 2700
+run             0
+change_box      all x final 0 1.5 units box
+run             0
+"""
+
 # pair_style mlp: a 2-D box of two atoms
 MLP_BOX = """
 units           lj
@@ -182,6 +201,13 @@ CASES = [
      r"has 12 neighbours to link, more than the capacity 6"),
     ("pair periodic images", lattice_box("fcc", 0.7184, 1) + PAIR + "run 0\n",
      r"would link to two periodic images of the same automaton"),
+    # a box shrunk (no remap) to twice a link: the two automata are half a
+    # box apart, and at these coordinates the closest images differ by
+    # round-off (1 sees 2, 2 sees the image of 1 at x + 1.5): each would
+    # take the link for one the other evaluates, or for one to a ghost
+    ("pair images differ", HALF_BOX_LINK,
+     r"the link of automaton 1 to automaton 2 is lost: 2 sees another periodic image of 1 \(the "
+     r"link is longer than the communication cutoff \S+, or half a periodic box length\)"),
     # fix mca/setvelocity
     ("setvel args", PAIR_RUN + "fix 1 all mca/setvelocity 0 0\n", r"mca/setvelocity"),
     ("setvel extra", PAIR_RUN + "fix 1 all mca/setvelocity 0 0 0 1\n",
