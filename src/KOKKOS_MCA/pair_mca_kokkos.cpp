@@ -125,7 +125,7 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::grow_kk_peratom()
   // never to a ghost), grown with some room: the number of local automata
   // changes at each reneighboring (then count_links_kk runs next)
   if (atom->nlocal > kk_nsums) {
-    kk_nsums = atom->nlocal + atom->nlocal / 64 + 16;
+    kk_nsums = local_rows(atom->nlocal);
     d_link_count = MCAKokkos::int_1d<DeviceType>("pair:link_count", kk_nsums);
     d_foreign = MCAKokkos::int_1d<DeviceType>("pair:foreign", kk_nsums);
     // (no row in the copies until count_links_kk gives the rows)

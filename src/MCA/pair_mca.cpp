@@ -977,7 +977,7 @@ void PairMCA::destroy_peratom()
 void PairMCA::grow_sums()
 {
   if (atom->nlocal <= nsums) return;
-  nsums = atom->nlocal + atom->nlocal / 64 + 16;
+  nsums = local_rows(atom->nlocal);
   memory->destroy(predictor_sums);
   memory->destroy(bmat);
   memory->create(predictor_sums, nsums, PS_SIZE, "pair:predictor_sums");

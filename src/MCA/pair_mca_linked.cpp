@@ -222,10 +222,10 @@ bool PairMCALinked::refresh_partners()
 
 void PairMCALinked::build_partner_cache()
 {
-  // (rows for the local automata only, with some room)
+  // (rows for the local automata only)
   const int nlocal = atom->nlocal;
   if (cache_rows < nlocal || cache_cols < links->maxlinks) {
-    cache_rows = nlocal + nlocal / 64 + 16;
+    cache_rows = local_rows(nlocal);
     cache_cols = links->maxlinks;
     allocate_partner_cache();
   }

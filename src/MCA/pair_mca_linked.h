@@ -85,6 +85,9 @@ class PairMCALinked : public Pair {
   bool refresh_partners();
   void build_partner_cache();
   virtual void allocate_partner_cache();
+  // rows of an array of the local automata, with room for the changes of
+  // their number at reneighboring (the partner cache, the pair styles' sums)
+  static int local_rows(int nlocal) { return nlocal + nlocal / 64 + 16; }
   int partner_index(int i, tagint partner_tag);
   MCAHostLinks host_links() const;
   void stretched_warning();
