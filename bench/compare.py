@@ -9,7 +9,12 @@ markdown table with new/base and writes it to --out.
 
     /usr/bin/python3 bench/compare.py --base /tmp/base/kokkos/lmp \\
         --new ~/.cache/mca/build/kokkos/lmp [--modes cpu kk1 kk2] \\
-        [--sizes 20 40] [--repeat 5] [--out results/compare.md]
+        [--sizes 20 40] [--repeat 5] [--out results/compare.md] \\
+        [--base-var KEY=VALUE ...] [--new-var KEY=VALUE ...]
+
+--base-var and --new-var give in.bench variables to one side (e.g. one
+executable as both sides, --new-var precision=mixed: the cost of an
+option).
 """
 
 import argparse
@@ -27,7 +32,13 @@ def main():
     ap.add_argument("--sizes", type=int, nargs="+", default=[20, 40])
     ap.add_argument("--repeat", type=int, default=5, help="runs of each (the best counts)")
     ap.add_argument("--out", default=None, help="markdown file for the table")
+    ap.add_argument("--base-var", nargs="+", default=[], metavar="KEY=VALUE",
+                    help="in.bench variables of the base runs")
+    ap.add_argument("--new-var", nargs="+", default=[], metavar="KEY=VALUE",
+                    help="in.bench variables of the new runs")
     args = ap.parse_args()
+    variables = {side: dict(kv.split("=", 1) for kv in getattr(args, f"{side}_var"))
+                 for side in ("base", "new")}
 
     lines = ["| automata | mode | base us/automaton-step | new | new/base |",
              "|---|---|---|---|---|"]
@@ -38,7 +49,8 @@ def main():
                 for _ in range(args.repeat):
                     for side in ("base", "new"):
                         lmp = os.path.abspath(os.path.expanduser(getattr(args, side)))
-                        row = run_once(mode, n, STEPS[n], logs, side, lmp)
+                        row = run_once(mode, n, STEPS[n], logs, side, lmp,
+                                       variables=variables[side])
                         if side not in best or row["us_wall"] < best[side]["us_wall"]:
                             best[side] = row
                 ratio = best["new"]["us_wall"] / best["base"]["us_wall"]

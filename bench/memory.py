@@ -11,6 +11,10 @@ steps (the set-up's stable time step estimate is in the peak).
     /usr/bin/python3 bench/memory.py --lmp base=/tmp/base/lmp new=~/.cache/mca/build/current/lmp
         [--sizes 20 40] [--steps 5] [--out results/memory]
 
+An entry label=path,KEY=VALUE,... gives the pair mca runs of that
+executable in.bench variables too (mixed=PATH,precision=mixed: the link
+rows in precision mixed).
+
 An executable's directory goes first on LD_LIBRARY_PATH (a copied build
 with its liblammps.so*).  Writes OUT.md and OUT.csv.
 """
@@ -50,13 +54,18 @@ def measure(lmp, label, variables, n, steps, logdir):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--lmp", nargs="+", required=True, help="label=path of each executable")
+    ap.add_argument("--lmp", nargs="+", required=True,
+                    help="label=path[,KEY=VALUE...] of each executable")
     ap.add_argument("--sizes", type=int, nargs="+", default=[20, 40])
     ap.add_argument("--steps", type=int, default=5)
     ap.add_argument("--out", default=os.path.join(HERE, "results", "memory"))
     args = ap.parse_args()
-    builds = [(s.split("=", 1)[0], os.path.abspath(os.path.expanduser(s.split("=", 1)[1])))
-              for s in args.lmp]
+    builds, build_vars = [], {}
+    for entry in args.lmp:
+        label, rest = entry.split("=", 1)
+        path, *pairs = rest.split(",")
+        builds.append((label, os.path.abspath(os.path.expanduser(path))))
+        build_vars[label] = dict(kv.split("=", 1) for kv in pairs)
     runs = [(label, variables) for label, _, geometry, variables in RUNS if geometry == "periodic"]
 
     rows = []
@@ -66,7 +75,8 @@ def main():
                 for build, lmp in builds:
                     if label == "granular" and build != builds[0][0]:
                         continue    # (the same code in every build)
-                    r = measure(lmp, label, variables, n, args.steps, logs)
+                    extra = {} if label == "granular" else build_vars[build]
+                    r = measure(lmp, label, dict(variables, **extra), n, args.steps, logs)
                     rows.append({"build": build, "style": label, "n": n, **r})
                     print(f"{build:8s} {label:9s} {r['atoms']:7d} automata: estimate "
                           f"{r['estimate_kib']:.2f} KiB, heap after the run "

@@ -36,7 +36,9 @@ cpu_mpi2 (2 MPI ranks), and with a KOKKOS build kk1, kk2 (1 and 2 OpenMP
 threads) and kk_mpi2.  Cost: core-seconds of the timed run (LAMMPS's loop
 time x ranks x threads; the set-up and the estimate of the time step, a
 run 0, are not counted).  The modes give the same errors (to round-off)
-at different costs.
+at different costs.  --precisions double mixed runs each case with the
+link rows of pair mca in each precision too (pair_style mca precision;
+"mixed" in the tables, open markers in the plot).
 
     eval "$(tools/mca env current)"
     bench/pareto.py                                  # about 6 minutes, 1 core
@@ -192,16 +194,19 @@ def cheapest_within(rows, column, tolerance):
     return min(ok, key=lambda r: r["core_seconds"]) if ok else None
 
 
-def run_case(scene, value, fraction, mode, work, lmp, lmp_kokkos, reuse=False, nu=None):
+def run_case(scene, value, fraction, mode, work, lmp, lmp_kokkos, reuse=False, nu=None,
+             precision="double"):
     """One run (or, with reuse, its log and output of an earlier one) and
-    its cost and errors; nu: Poisson's ratio of the wave (default 0.3)."""
+    its cost and errors; nu: Poisson's ratio of the wave (default 0.3);
+    precision: of pair mca's link rows."""
     inp, knob, _, fixed = SCENES[scene]
     if nu is not None and scene != "wave":
         raise ValueError(f"nu is a variable of the wave scene, not of {scene}")
     fixed = dict(fixed, **({} if nu is None else {"nu": str(nu)}))
     ranks, threads, kokkos = MODES[mode]
     exe = lmp_kokkos if kokkos else lmp
-    label = f"{scene}.{knob}{value}.f{fraction:g}.{mode}" + ("" if nu is None else f".nu{nu:g}")
+    label = (f"{scene}.{knob}{value}.f{fraction:g}.{mode}" + ("" if nu is None else f".nu{nu:g}")
+             + ("" if precision == "double" else f".{precision}"))
     log = work / f"log.{label}"
     dat = work / (f"pareto_wave.{label}.dat" if scene == "wave" else f"pareto_cube.{label}.dat")
     if not (reuse and log.exists() and dat.exists()):
@@ -209,6 +214,8 @@ def run_case(scene, value, fraction, mode, work, lmp, lmp_kokkos, reuse=False, n
                 "-var", "label", label, "-log", str(log), "-screen", "none"]
         for key, val in fixed.items():
             args += ["-var", key, val]
+        if precision != "double":
+            args += ["-var", "precision", precision]
         run_mode_command(mode, exe, args, work)
     text = log.read_text()
     timing = parse_log(text)
@@ -216,7 +223,7 @@ def run_case(scene, value, fraction, mode, work, lmp, lmp_kokkos, reuse=False, n
     if not done:
         raise RuntimeError(f"{log}: the run did not finish")
     row = {"scene": scene, "resolution": value, "fraction": fraction, "mode": mode,
-           "automata": int(done[-1][2]), "steps": int(done[-1][1]), "dt": float(done[-1][0]),
+           "precision": precision, "automata": int(done[-1][2]), "steps": int(done[-1][1]), "dt": float(done[-1][0]),
            "core_seconds": timing["seconds"] * ranks * threads}
     if nu is not None:
         row["nu"] = nu
@@ -225,8 +232,46 @@ def run_case(scene, value, fraction, mode, work, lmp, lmp_kokkos, reuse=False, n
     return row
 
 
+def way(r):
+    """How a run ran: its mode, and the precision where it is not double."""
+    return r["mode"] + ("" if r.get("precision", "double") == "double" else f" {r['precision']}")
+
+
 def percent(x):
     return f"{100 * x:+.3g} %" if isinstance(x, float) and math.isfinite(x) else ""
+
+
+ERRORS = {"cube": ("E_error", "nu_error"), "plastic": ("yield_error", "tangent_error"),
+          "wave": ("speed_error", "energy_error", "amplitude_loss")}
+
+
+def precision_table(rows):
+    """With runs in both precisions: per scene and error, the largest change
+    of the error from double to mixed over the cases run in both, the range
+    of the errors of double, and the cost of mixed over double."""
+    key = lambda r: (r["scene"], r["resolution"], r["fraction"], r["mode"])  # noqa: E731
+    double = {key(r): r for r in rows if r.get("precision", "double") == "double"}
+    mixed = [r for r in rows if r.get("precision") == "mixed" and key(r) in double]
+    if not mixed:
+        return []
+    lines = ["## Precision mixed against double", "",
+             "Over the cases run in both precisions: the largest change of each error "
+             "(absolute, of the relative error; the energy error is the largest deviation of "
+             "the total energy over its initial value), the range of the errors of double, "
+             "and the cost of mixed over double (smallest - largest).", "",
+             "| scene | error | largest change | double's errors | cases | cost mixed / double |",
+             "|---|---|---|---|---|---|"]
+    for scene, columns in ERRORS.items():
+        mine = [r for r in mixed if r["scene"] == scene]
+        if not mine:
+            continue
+        ratios = [r["core_seconds"] / double[key(r)]["core_seconds"] for r in mine]
+        for col in columns:
+            change = max(abs(r[col] - double[key(r)][col]) for r in mine)
+            base = [abs(double[key(r)][col]) for r in mine]
+            lines.append(f"| {scene} | {col} | {change:.2g} | {min(base):.2g} - {max(base):.2g} | "
+                         f"{len(mine)} | {min(ratios):.3f} - {max(ratios):.3f} |")
+    return lines + [""]
 
 
 def write_table(rows, path):
@@ -244,20 +289,21 @@ def write_table(rows, path):
         lines += [f"## {scene}", "",
                   f"| {knob} | automata | f | mode | steps | core-s | us / automaton-step | " +
                   " | ".join(extra) + " |", "|---" * (7 + len(extra)) + "|"]
-        for r in sorted(mine, key=lambda r: (r["resolution"], r["fraction"], r["mode"])):
+        for r in sorted(mine, key=lambda r: (r["resolution"], r["fraction"], way(r))):
             lines.append(f"| {r['resolution']} | {r['automata']} | {r['fraction']:g} | "
-                         f"{r['mode']} | {r['steps']} | {r['core_seconds']:.3g} | "
+                         f"{way(r)} | {r['steps']} | {r['core_seconds']:.3g} | "
                          f"{r['us_per_automaton_step']:.3f} | " +
                          " | ".join(percent(r[c]) if c != "energy_error" else f"{r[c]:.2e}"
                                     for c in extra) + " |")
         lines.append("")
+    lines += precision_table(rows)
     lines += ["## Pareto fronts and the cheapest run within a tolerance", ""]
     for scene, column, title in PANELS:
         mine = [r for r in rows if r["scene"] == scene]
         if not mine:
             continue
         def run_name(r):
-            return f"{SCENES[scene][1]}{r['resolution']} f{r['fraction']:g} {r['mode']}"
+            return f"{SCENES[scene][1]}{r['resolution']} f{r['fraction']:g} {way(r)}"
 
         front = pareto_front([r["core_seconds"] for r in mine], [abs(r[column]) for r in mine])
         cheapest = [(tol, cheapest_within(mine, column, tol)) for tol in TOLERANCES]
@@ -288,8 +334,10 @@ def plot(rows, path):
             continue
         knob = SCENES[scene][1]
         for r in mine:
+            mixed = r.get("precision", "double") != "double"
             ax.loglog(r["core_seconds"], abs(r[column]), markers[r["mode"]],
-                      color=colors[r["fraction"]], ms=4 + math.log2(r["resolution"]))
+                      color=colors[r["fraction"]], ms=4 + math.log2(r["resolution"]),
+                      mfc="none" if mixed else colors[r["fraction"]])
         front = pareto_front([r["core_seconds"] for r in mine], [abs(r[column]) for r in mine])
         ax.step([mine[i]["core_seconds"] for i in front], [abs(mine[i][column]) for i in front],
                 "k-", where="post", lw=0.8)
@@ -305,6 +353,9 @@ def plot(rows, path):
                for m in markers if any(r["mode"] == m for r in rows)]
     handles += [plt.Line2D([], [], ls="", marker="o", color=colors[f], label=f"f = {f:g}")
                 for f in fractions]
+    if any(r.get("precision", "double") != "double" for r in rows):
+        handles.append(plt.Line2D([], [], ls="", marker="o", color="k", mfc="none",
+                                  label="precision mixed"))
     fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8)
     fig.suptitle("MCA: cost against error (marker size grows with the resolution; "
                  "line: Pareto front)", fontsize=10)
@@ -320,6 +371,8 @@ def main():
     ap.add_argument("--wave-m", type=int, nargs="+", default=list(SCENES["wave"][2]))
     ap.add_argument("--fractions", type=float, nargs="+", default=[0.3, 0.7, 0.9])
     ap.add_argument("--modes", nargs="+", default=["cpu"], choices=list(MODES))
+    ap.add_argument("--precisions", nargs="+", default=["double"], choices=["double", "mixed"],
+                    help="precision of pair mca's link rows (pair_style mca precision)")
     ap.add_argument("--lmp", default="lmp", help="LAMMPS with MCA for the cpu modes")
     ap.add_argument("--lmp-kokkos", default=None, help="LAMMPS with KOKKOS_MCA for the kk modes")
     ap.add_argument("--work", default=None, help="directory of the logs (default OUT/)")
@@ -346,19 +399,20 @@ def main():
     work = pathlib.Path(args.work) if args.work else out
     work.mkdir(parents=True, exist_ok=True)
 
-    cases = [(scene, value, fraction, mode) for scene in args.scenes for value in values[scene]
-             for fraction in args.fractions for mode in args.modes]
+    cases = [(scene, value, fraction, mode, precision) for scene in args.scenes
+             for value in values[scene] for fraction in args.fractions for mode in args.modes
+             for precision in args.precisions]
     best = {}
     # the whole sweep again for each repeat (the drift of a shared machine
     # then reaches every case alike); a case keeps its cheapest run
     for repeat in range(1 if args.reuse else args.repeat):
         for case in cases:
-            scene, value, fraction, mode = case
+            scene, value, fraction, mode, precision = case
             row = run_case(scene, value, fraction, mode, work, args.lmp, args.lmp_kokkos,
-                           args.reuse)
+                           args.reuse, precision=precision)
             if case not in best or row["core_seconds"] < best[case]["core_seconds"]:
                 best[case] = row
-            print(f"{scene:8s} {SCENES[scene][1]}={value:3d} f={fraction:<4g} {mode:8s} "
+            print(f"{scene:8s} {SCENES[scene][1]}={value:3d} f={fraction:<4g} {way(row):14s} "
                   f"{row['automata']:7d} automata {row['steps']:6d} steps "
                   f"{row['core_seconds']:9.3f} core-s  error {row['error']:.3e}"
                   + (f"  (repeat {repeat + 1})" if args.repeat > 1 else ""), flush=True)

@@ -76,7 +76,7 @@ void FixMCALinksKokkos::allocate_links(int nmax)
 void FixMCALinksKokkos::grow_pool(int n)
 {
   to_host();
-  memoryKK->grow_kokkos(k_rows, rows, n, row_size, "mca/links:rows");
+  memoryKK->grow_kokkos(k_rows, rows, n, stored_size, "mca/links:rows");
   maxrows = n;
   host_changed();
 }

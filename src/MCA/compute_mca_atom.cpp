@@ -133,16 +133,18 @@ double ComputeMCAAtom::value(int i, int w)
     if (ca < 0) return 0.0;
     if (w == CONTACT_WORK) return 0.5 * links->atom_state[i][ca + MCAKernels::CA_WORK];
     double sum = links->atom_state[i][ca + MCAKernels::CA_FRICTION];
+    double work[MCAKernels::MAX_ROW_SIZE];
     for (int m = 0; m < links->nlinks[i]; m++)
-      sum += MCAKernels::link_friction_work(links->row(i, m), layout);
+      sum += MCAKernels::link_friction_work(links->read_row(i, m, work), layout);
     return 0.5 * sum;
   }
   // links: linked partners of the automaton; contacts: the partners it
   // touches (contact rows that push)
   const int state = (w == CONTACTS) ? MCAKernels::LINK_CONTACT : MCAKernels::LINK_LINKED;
   int n = 0;
+  double work[MCAKernels::MAX_ROW_SIZE];
   for (int m = 0; m < links->nlinks[i]; m++) {
-    const double *row = links->row(i, m);
+    const double *row = links->read_row(i, m, work);
     if (static_cast<int>(row[MCAKernels::H_STATE]) != state) continue;
     if (w == CONTACTS &&
         !(row[MCAKernels::H_LO + MCAKernels::HALF_SIG] +

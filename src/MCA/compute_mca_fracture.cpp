@@ -79,10 +79,11 @@ void ComputeMCAFracture::compute_vector()
   const int ff = links->model.layout().link_offset[PART_FRACTURE];
   const int fa = links->model.layout().atom_offset[PART_FRACTURE];
   double local[NVALUES] = {0.0};
+  double work[MAX_ROW_SIZE];
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     for (int m = 0; m < links->nlinks[i]; m++) {
-      const double *row = links->row(i, m);
+      const double *row = links->read_row(i, m, work);
       if (!broken(row)) continue;
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
       if (cause > BREAK_NONE && cause < NBREAK) local[cause] += 1.0;

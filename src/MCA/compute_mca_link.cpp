@@ -154,12 +154,13 @@ void ComputeMCALink::compute_local()
   const bool friction = links->model.layout().link_offset[PART_CONTACT] >= 0;
   // each link once: from its lower ID
   int row = 0;
+  double work[MAX_ROW_SIZE];
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     for (int m = 0; m < links->nlinks[i]; m++) {
       const tagint other = links->partner[i][m];
       if (tag[i] >= other) continue;
-      const double *h = links->row(i, m);
+      const double *h = links->read_row(i, m, work);
       int j = atom->map(other);
       if (j < 0)
         error->one(FLERR,

@@ -20,6 +20,7 @@
 #include "error.h"
 #include "mca_compat.h"
 #include "mca_link_passes.h"
+#include "mca_row_codec.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -41,22 +42,32 @@ static constexpr int LAYOUT1 = 1, LAYOUT1_SIZE = 27, LAYOUT1_PLASTICITY_SIZE = 2
 
 /* ----------------------------------------------------------------------
    fix ID group MCA_LINKS name link_size atom_size [name link_size atom_size ...]
+                          [precision double/mixed]
 ------------------------------------------------------------------------- */
 
 FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), slot(nullptr), rows(nullptr), nrows(0),
     maxrows(0), atom_state(nullptr), list(nullptr)
 {
-  if (narg < 6 || (narg - 3) % 3 != 0)
+  int nblock_args = narg - 3;
+  if (narg >= 5 && strcmp(arg[narg - 2], "precision") == 0) {
+    if (strcmp(arg[narg - 1], "mixed") != 0 && strcmp(arg[narg - 1], "double") != 0)
+      error->all(FLERR, "Fix MCA_LINKS: precision {} is not double or mixed", arg[narg - 1]);
+    model.set_mixed(strcmp(arg[narg - 1], "mixed") == 0);
+    nblock_args -= 2;
+  }
+  if (nblock_args < 3 || nblock_args % 3 != 0)
     error->all(FLERR,
                "Illegal fix MCA_LINKS command (internal fix of pair mca: the blocks of its "
-               "link model as name link_size atom_size)");
-  for (int iarg = 3; iarg < narg; iarg += 3)
-    model.add_part(link_part_id(arg[iarg]), arg[iarg],
-                   utils::inumeric(FLERR, arg[iarg + 1], false, lmp),
-                   utils::inumeric(FLERR, arg[iarg + 2], false, lmp));
+               "link model as name link_size atom_size, then precision double/mixed)");
+  for (int iarg = 3; iarg < 3 + nblock_args; iarg += 3) {
+    const int part = link_part_id(arg[iarg]);
+    model.add_part(part, arg[iarg], utils::inumeric(FLERR, arg[iarg + 1], false, lmp),
+                   utils::inumeric(FLERR, arg[iarg + 2], false, lmp), link_part_exact_slots(part));
+  }
   row_size = model.layout().row_size;
   atom_size = model.layout().atom_size;
+  stored_size = model.layout().stored_size;
   if (row_size > MAX_ROW_SIZE)
     error->all(FLERR, "Fix MCA_LINKS: a link row of {} values is longer than the {} supported",
                row_size, static_cast<int>(MAX_ROW_SIZE));
@@ -178,7 +189,7 @@ void FixMCALinks::set_capacity(int capacity)
   host_changed();
 
   // largest record an atom sends when it moves to another processor
-  maxexchange = values_per_atom(maxlinks);
+  maxexchange = values_per_atom(maxlinks, stored_size);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -208,7 +219,7 @@ void FixMCALinks::allocate_links(int nmax)
 // room for n rows in the pool, keeping those in use
 void FixMCALinks::grow_pool(int n)
 {
-  memory->grow(rows, n, row_size, "mca/links:rows");
+  memory->grow(rows, n, stored_size, "mca/links:rows");
   maxrows = n;
 }
 
@@ -218,7 +229,20 @@ double *FixMCALinks::new_row(int i, int m)
 {
   if (nrows == maxrows) grow_pool(MAX(1024, nrows + nrows / 4));
   slot[i][m] = nrows;
-  return rows[nrows++];
+  double *row = rows[nrows++];
+  // (zeros: a mixed row may have a float of padding)
+  for (int k = 0; k < stored_size; k++) row[k] = 0.0;
+  return row;
+}
+
+void FixMCALinks::add_row(int i, int m, const double *h)
+{
+  encode_row(model.layout(), h, new_row(i, m));
+}
+
+const double *FixMCALinks::read_row(int i, int m, double *work) const
+{
+  return MCAKernels::read_row(model.layout(), stored_row(i, m), work);
 }
 
 void FixMCALinks::reserve_rows(bigint n)
@@ -264,7 +288,7 @@ bool FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
       if (place[s] >= 0) {
         const int shared = s;
         double *copy = new_row(i, m);
-        std::copy(rows[shared], rows[shared] + row_size, copy);
+        std::copy(rows[shared], rows[shared] + stored_size, copy);
         s = slot[i][m];
         place.push_back(-1);
       }
@@ -277,12 +301,12 @@ bool FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
   // (its row dropped or moved already)
   if (!in_place) {
     std::vector<char> moved(nrows, 0);
-    std::vector<double> carry(row_size);
+    std::vector<double> carry(stored_size);
     for (int s = 0; s < nrows; s++) {
       if (place[s] < 0 || moved[s]) continue;
       moved[s] = 1;
       if (place[s] == s) continue;
-      std::copy(rows[s], rows[s] + row_size, carry.data());
+      std::copy(rows[s], rows[s] + stored_size, carry.data());
       int at = place[s];
       while (place[at] >= 0 && !moved[at]) {
         std::swap_ranges(carry.begin(), carry.end(), rows[at]);
@@ -334,7 +358,7 @@ double FixMCALinks::memory_usage()
   const double nmax = atom->nmax;
   return nmax *
       (sizeof(int) + maxlinks * (sizeof(tagint) + sizeof(int)) + atom_size * sizeof(double)) +
-      (double) maxrows * row_size * sizeof(double);
+      (double) maxrows * stored_size * sizeof(double);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -369,14 +393,26 @@ void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
 
 int FixMCALinks::pack_exchange(int i, double *buf)
 {
+  return pack_record(i, buf, true);
+}
+
+// the record of atom i, with its rows as they are stored (a move to
+// another processor) or as the law reads them (a restart file)
+int FixMCALinks::pack_record(int i, double *buf, bool stored)
+{
   to_host();
   int m = 0;
   buf[m++] = nlinks[i];
   for (int k = 0; k < atom_size; k++) buf[m++] = atom_state[i][k];
   for (int k = 0; k < nlinks[i]; k++) {
     buf[m++] = ubuf(partner[i][k]).d;
-    memcpy(&buf[m], row(i, k), row_size * sizeof(double));
-    m += row_size;
+    if (stored) {
+      memcpy(&buf[m], stored_row(i, k), stored_size * sizeof(double));
+      m += stored_size;
+    } else {
+      decode_row(model.layout(), stored_row(i, k), &buf[m]);
+      m += row_size;
+    }
   }
   return m;
 }
@@ -385,30 +421,37 @@ int FixMCALinks::pack_exchange(int i, double *buf)
 
 int FixMCALinks::unpack_exchange(int nlocal, double *buf)
 {
-  return unpack_record(nlocal, buf, false);
+  return unpack_record(nlocal, buf, RECORD_STORED);
 }
 
 /* ----------------------------------------------------------------------
-   the links and law state of a new local atom from its record; with
-   layout1, the rows are in history layout 1 (a restart file of an earlier
-   version) and are converted
+   the links and law state of a new local atom from its record: its rows
+   as they are stored (from another processor), as the law reads them (a
+   restart file), or in history layout 1 (a restart file of an earlier
+   version: converted)
 ------------------------------------------------------------------------- */
 
-int FixMCALinks::unpack_record(int nlocal, const double *buf, bool layout1)
+int FixMCALinks::unpack_record(int nlocal, const double *buf, RecordRows from)
 {
   to_host();
-  const int record_row_size = layout1 ? layout1_file.layout().row_size : row_size;
+  int width = row_size;
+  if (from == RECORD_STORED) width = stored_size;
+  if (from == RECORD_LAYOUT1) width = layout1_file.layout().row_size;
   int m = 0;
   nlinks[nlocal] = static_cast<int>(buf[m++]);
   for (int k = 0; k < atom_size; k++) atom_state[nlocal][k] = buf[m++];
   for (int k = 0; k < nlinks[nlocal]; k++) {
     partner[nlocal][k] = (tagint) ubuf(buf[m++]).i;
-    double *row = new_row(nlocal, k);
-    if (layout1)
-      convert_layout1_row(&buf[m], row);
-    else
-      memcpy(row, &buf[m], row_size * sizeof(double));
-    m += record_row_size;
+    if (from == RECORD_STORED) {
+      memcpy(new_row(nlocal, k), &buf[m], stored_size * sizeof(double));
+    } else if (from == RECORD_LAYOUT1) {
+      double h[MAX_ROW_SIZE] = {};
+      convert_layout1_row(&buf[m], h);
+      add_row(nlocal, k, h);
+    } else {
+      add_row(nlocal, k, &buf[m]);
+    }
+    m += width;
   }
   host_changed();
   return m;
@@ -501,7 +544,7 @@ void FixMCALinks::restart(char *buf)
 
 int FixMCALinks::pack_restart(int i, double *buf)
 {
-  const int n = pack_exchange(i, &buf[1]);
+  const int n = pack_record(i, &buf[1], false);
   buf[0] = n + 1;
   return n + 1;
 }
@@ -521,7 +564,8 @@ void FixMCALinks::unpack_restart(int nlocal, int nth)
   if (n > maxlinks)
     error->one(FLERR, "Restart file holds {} links for an automaton, more than the capacity {}", n,
                maxlinks);
-  unpack_record(nlocal, &extra[nlocal][m], !layout1_file.blocks().empty());
+  unpack_record(nlocal, &extra[nlocal][m],
+                layout1_file.blocks().empty() ? RECORD_LAW : RECORD_LAYOUT1);
 }
 
 /* ----------------------------------------------------------------------
@@ -560,12 +604,12 @@ void FixMCALinks::convert_layout1_row(const double *old, double *row) const
 int FixMCALinks::size_restart(int nlocal)
 {
   to_host();
-  return 1 + values_per_atom(nlinks[nlocal]);
+  return 1 + values_per_atom(nlinks[nlocal], row_size);
 }
 
 /* ---------------------------------------------------------------------- */
 
 int FixMCALinks::maxsize_restart()
 {
-  return 1 + values_per_atom(maxlinks);
+  return 1 + values_per_atom(maxlinks, row_size);
 }

@@ -39,8 +39,11 @@ namespace LAMMPS_NS {
    data.  Each automaton also keeps the law state of the link model.
 
    The fix knows no law: the pair style passes the blocks of its link
-   model (MCALinkModel) as arguments, "name link_size atom_size" each, and
-   the widths of a row and of the state follow from them.
+   model (MCALinkModel) as arguments, "name link_size atom_size" each,
+   and "precision mixed" where its rows are stored so (mca_row_codec.h);
+   the widths of a row and of the state follow from them.  Rows move to
+   other processors as they are stored and go to restart files as
+   doubles, whatever the precision.
 ------------------------------------------------------------------------- */
 
 class FixMCALinks : public Fix {
@@ -71,18 +74,25 @@ class FixMCALinks : public Fix {
   int *nlinks;            // number of links of each atom
   tagint **partner;       // atom ID of the partner of each link
   int **slot;             // the row of each link in the pool
-  double **rows;          // the pool: row_size doubles per row (see mca_link_layout.h)
+  double **rows;          // the pool: stored_size doubles per row (mca_row_codec.h)
   int nrows, maxrows;     // rows in use, allocated
   double **atom_state;    // atom_size doubles of law state per automaton
 
   MCALinkModel model;    // the blocks of a row and of the state
   int row_size, atom_size;
+  int stored_size;    // doubles of a stored row (row_size in precision double)
 
   int created;    // 1 once the links have been made (kept in restart files)
 
-  double *row(int i, int m) const { return rows[slot[i][m]]; }
-  // a new row for link m of local atom i (contents undefined)
+  // the stored row of link m of atom i (mca_row_codec.h)
+  double *stored_row(int i, int m) const { return rows[slot[i][m]]; }
+  // the row of link m of atom i as the law reads it: the stored row, or
+  // decoded into work (MAX_ROW_SIZE doubles)
+  const double *read_row(int i, int m, double *work) const;
+  // a new stored row for link m of local atom i (zeros)
   double *new_row(int i, int m);
+  // a new row for link m of local atom i, from the law's row h
+  void add_row(int i, int m, const double *h);
   // room for n rows in all (new_row() grows the pool by a quarter)
   void reserve_rows(bigint n);
   // one row for each link between local atoms (the row of the end that
@@ -110,12 +120,16 @@ class FixMCALinks : public Fix {
 
  private:
   class NeighList *list;
-  // values of an automaton's exchange record (a restart record has one more: its length)
-  int values_per_atom(int nlink) const { return 1 + atom_size + nlink * (1 + row_size); }
+  // values of an automaton's record, its rows width doubles each: stored
+  // rows when it moves, rows as the law reads them in restart files (a
+  // restart record has one more value: its length)
+  int values_per_atom(int nlink, int width) const { return 1 + atom_size + nlink * (1 + width); }
+  enum RecordRows { RECORD_STORED, RECORD_LAW, RECORD_LAYOUT1 };
+  int pack_record(int i, double *buf, bool stored);
   // the blocks of the restart file being read, where its rows are in
   // history layout 1 (converted as they are read); empty otherwise
   MCALinkModel layout1_file;
-  int unpack_record(int nlocal, const double *buf, bool layout1);
+  int unpack_record(int nlocal, const double *buf, RecordRows rows);
   void convert_layout1_row(const double *old, double *row) const;
 };
 

@@ -182,15 +182,21 @@ namespace MCAKernels {
     int part;            // LinkPart id
     int link_size, atom_size;
     bool required;    // in every model
+    // the slots of its block (a bit each) that a row in "precision mixed"
+    // keeps in double (mca_row_codec.h): the lengths and the normal, from
+    // which every step's strain and rotation are differences (in floats
+    // the wave's energy strays by 96 %, bench/README.md), and step numbers
+    // (exact integers in a double, not in a float beyond 2^24)
+    unsigned exact_slots;
   };
 
   constexpr MCALinkPartInfo MCA_LINK_PARTS[] = {
-      {"elastic", "elastic", PART_ELASTIC, H_SIZE, A_SIZE, true},
-      {"damping", "viscous", PART_DAMPING, D_SIZE, 0, false},
-      {"plasticity", "mises", PART_PLASTICITY, P_SIZE, PA_SIZE, false},
-      {"fracture", "links", PART_FRACTURE, F_SIZE, FA_SIZE, false},
-      {"contacts", "coulomb", PART_CONTACT, C_SIZE, CA_SIZE, false},
-      {"healing", "weld", PART_HEALING, HL_SIZE, HA_SIZE, false},
+      {"elastic", "elastic", PART_ELASTIC, H_SIZE, A_SIZE, true, ELASTIC_EXACT_SLOTS},
+      {"damping", "viscous", PART_DAMPING, D_SIZE, 0, false, 0u},
+      {"plasticity", "mises", PART_PLASTICITY, P_SIZE, PA_SIZE, false, 0u},
+      {"fracture", "links", PART_FRACTURE, F_SIZE, FA_SIZE, false, 1u << F_STEP},
+      {"contacts", "coulomb", PART_CONTACT, C_SIZE, CA_SIZE, false, 0u},
+      {"healing", "weld", PART_HEALING, HL_SIZE, HA_SIZE, false, 1u << HL_STEP},
   };
   constexpr int MCA_NUM_LINK_PARTS = sizeof(MCA_LINK_PARTS) / sizeof(MCA_LINK_PARTS[0]);
   static_assert(MCA_LINK_PARTS[PART_ELASTIC].part == PART_ELASTIC,
@@ -203,6 +209,13 @@ namespace MCAKernels {
     for (const auto &p : MCA_LINK_PARTS)
       if (name == p.name) return p.part;
     return -1;
+  }
+  // the slots of a part's block that a mixed row keeps in double
+  inline unsigned link_part_exact_slots(int part)
+  {
+    for (const auto &p : MCA_LINK_PARTS)
+      if (part == p.part) return p.exact_slots;
+    return 0u;
   }
 
   /* ----------------------------------------------------------------------

@@ -72,6 +72,10 @@ namespace MCAKernels {
     H_WORK,                   // elastic energy of the link
     H_SIZE                    // size of the elastic block
   };
+  // the slots of the elastic block that a row in precision mixed keeps in
+  // double (MCALinkPartInfo, mca_row_codec.h)
+  constexpr unsigned ELASTIC_EXACT_SLOTS =
+      1u << H_RPREV | 1u << H_Q0LO | 1u << H_Q0HI | 1u << H_R0 | 7u << H_NPREV;
   // offsets inside a half (ints: C++20 deprecates adding them to the
   // LinkHistory enumerators if they were another enumeration)
   constexpr int HALF_SIG = 0, HALF_EPS = 1, HALF_T = 2, HALF_SIZE = 5;
@@ -99,10 +103,17 @@ namespace MCAKernels {
      are compile-time offsets.                                            */
 
   struct MCALinkLayout {
-    int row_size;                  // doubles per link row
+    int row_size;                  // values per link row, as the law reads it
     int atom_size;                 // doubles of law state per automaton
     int link_offset[MAX_PARTS];    // where each part's block starts in a row
     int atom_offset[MAX_PARTS];    // and in an automaton's state
+    // how a row is stored (mca_row_codec.h): in row_size doubles, or with
+    // "precision mixed" its exact slots (a bit each in exact) in doubles
+    // and the others in floats after them; stored_size doubles in all
+    int mixed;
+    int stored_size;
+    int exact_count;
+    unsigned exact[MAX_ROW_SIZE / 32];
   };
 
 }    // namespace MCAKernels

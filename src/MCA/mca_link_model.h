@@ -45,16 +45,36 @@ class MCALinkModel {
       layout_.link_offset[p] = layout_.atom_offset[p] = -1;
   }
 
-  void add_part(int part, const std::string &name, int link_size, int atom_size)
+  // exact_slots: the slots of the block (a bit each) that a row in
+  // precision mixed keeps in double (MCALinkPartInfo)
+  void add_part(int part, const std::string &name, int link_size, int atom_size,
+                unsigned exact_slots = 0u)
   {
     if (part >= 0 && part < MCAKernels::MAX_PARTS) {
       layout_.link_offset[part] = layout_.row_size;
       layout_.atom_offset[part] = layout_.atom_size;
     }
+    for (int k = 0; k < link_size && k < 32; k++) {
+      const int slot = layout_.row_size + k;
+      if ((exact_slots >> k & 1u) && slot < MCAKernels::MAX_ROW_SIZE) {
+        layout_.exact[slot / 32] |= 1u << (slot % 32);
+        layout_.exact_count++;
+      }
+    }
     layout_.row_size += link_size;
     layout_.atom_size += atom_size;
     blocks_.push_back(Block{name, link_size, atom_size});
+    update_storage();
   }
+
+  // rows stored in doubles (false) or in precision mixed (true)
+  void set_mixed(bool mixed)
+  {
+    layout_.mixed = mixed ? 1 : 0;
+    update_storage();
+  }
+  bool mixed() const { return layout_.mixed != 0; }
+  const char *precision() const { return mixed() ? "mixed" : "double"; }
 
   const std::vector<Block> &blocks() const { return blocks_; }
   const MCAKernels::MCALinkLayout &layout() const { return layout_; }
@@ -74,7 +94,7 @@ class MCALinkModel {
     for (const auto &b : blocks_) text += (text.empty() ? "" : " ") + b.name;
     return text;
   }
-  // "name link_size atom_size ..." (the arguments of the links fix)
+  // "name link_size atom_size ..." (the blocks, as messages name them)
   std::string describe() const
   {
     std::string text;
@@ -83,10 +103,21 @@ class MCALinkModel {
           std::to_string(b.atom_size);
     return text;
   }
+  // the arguments of the links fix: the blocks, and the precision where
+  // it is not double
+  std::string fix_arguments() const { return describe() + (mixed() ? " precision mixed" : ""); }
 
  private:
   std::vector<Block> blocks_;
   MCAKernels::MCALinkLayout layout_ = {};
+
+  // a mixed row: its exact slots in doubles, then the others in floats,
+  // two to a double
+  void update_storage()
+  {
+    const int floats = layout_.row_size - layout_.exact_count;
+    layout_.stored_size = layout_.mixed ? layout_.exact_count + (floats + 1) / 2 : layout_.row_size;
+  }
 };
 
 }    // namespace LAMMPS_NS

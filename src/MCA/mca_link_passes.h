@@ -21,8 +21,9 @@
             d.x(i, k), d.x_row(i, scratch) (the 3 coordinates in a row:
             the array's own, or copied into scratch), d.tag(i),
             d.nlinks(i), d.partner(i, m) (local or
-            ghost index), d.history_row(i, m) (the link's row: one row for
-            both ends of a link between local automata), d.atom_state(i, k),
+            ghost index), d.history_row(i, m) (the link's stored row: one
+            row for both ends of a link between local automata; read and
+            written through mca_row_codec.h), d.atom_state(i, k),
             d.material(type), ... (PairMCA::HostData, MCAPairViews)
      Sums   where a link adds to its two automata: begin(i) gives the
             adder of automaton i; own(add, i, k, v) adds v to column k of
@@ -46,6 +47,7 @@
 #include "mca_contact.h"
 #include "mca_link_law.h"
 #include "mca_mean_stress.h"
+#include "mca_row_codec.h"
 
 namespace LAMMPS_NS {
 namespace MCAKernels {
@@ -77,7 +79,7 @@ namespace MCAKernels {
   }
 
   // does automaton i evaluate its link m, in the state State (LinkState)?
-  // row: the link's row, j: the partner.  The row is read only for the
+  // row: the link's stored row, j: the partner.  The row is read only for the
   // links i evaluates: the row of a link the partner evaluates is the
   // partner's (loading it would be wasted traffic, and on threads the
   // partner's thread may be changing it)
@@ -87,13 +89,7 @@ namespace MCAKernels {
     j = d.partner(i, m);
     if (partner_evaluates(d, i, j)) return false;
     row = d.history_row(i, m);
-    return static_cast<int>(row[H_STATE]) == State;
-  }
-
-  // the n doubles of a row to another (a setup's copy)
-  MCA_FORCE_INLINE void copy_row(const double *from, double *to, int n)
-  {
-    for (int k = 0; k < n; k++) to[k] = from[k];
+    return stored_state(d.layout, row) == State;
   }
 
   /* ----------------------------------------------------------------------
@@ -105,7 +101,7 @@ namespace MCAKernels {
   {
     int n = 0;
     for (int m = 0; m < d.nlinks(i); m++)
-      if (linked(d.history_row(i, m))) n++;
+      if (stored_state(d.layout, d.history_row(i, m)) == LINK_LINKED) n++;
     d.link_count(i) = n;
     const MCAMaterial &mat = d.material(d.type(i));
     const int nc = d.packing(i);
@@ -121,23 +117,25 @@ namespace MCAKernels {
   MCA_FUNCTION void predictor_links_of(const D &d, const Sums &sums, int i)
   {
     auto add = sums.begin(i);
+    double work[MAX_ROW_SIZE];
     for (int m = 0; m < d.nlinks(i); m++) {
       const int j = d.partner(i, m);
       if (partner_evaluates(d, i, j)) continue;
-      const double *h = d.history_row(i, m);
+      const double *stored = d.history_row(i, m);
+      const int state = stored_state(d.layout, stored);
       const double del[3] = {d.x(j, 0) - d.x(i, 0), d.x(j, 1) - d.x(i, 1), d.x(j, 2) - d.x(i, 2)};
       double nn[6], de_i, de_j;
-      if (!linked(h)) {
+      if (state != LINK_LINKED) {
         // the face of a broken link stays in the fabric tensor with a
         // traction of zero (a crack face): the stress of an automaton that
         // lost links keeps a well-conditioned fit (the links left may all
         // lie in a plane)
-        if (!broken(h)) continue;
+        if (state != LINK_BROKEN) continue;
         link_direction(del, nn);
         de_i = de_j = 0.0;
       } else {
-        link_prediction(h, del, d.tag(i) < d.tag(j), d.pred_stiffness(i), d.pred_stiffness(j), nn,
-                        de_i, de_j);
+        link_prediction(read_row(d.layout, stored, work, H_PREDICTOR_END), del, d.tag(i) < d.tag(j),
+                        d.pred_stiffness(i), d.pred_stiffness(j), nn, de_i, de_j);
       }
       for (int k = 0; k < 6; k++) {
         sums.own(add, i, PS_FABRIC + k, nn[k]);
@@ -243,13 +241,10 @@ namespace MCAKernels {
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
 
-      // a step updates the row in place; a setup works on a copy
-      double copy[MAX_ROW_SIZE];
-      double *h = row;
-      if (!p.commit) {
-        copy_row(row, copy, d.layout.row_size);
-        h = copy;
-      }
+      // a step updates the row (in place, or decoded and encoded again);
+      // a setup works on a copy
+      double work[MAX_ROW_SIZE];
+      double *h = open_row(d.layout, row, work, p.commit);
       MCALinkEnds e;
       double scratch[12];
       link_ends_of(d, lo, hi, p.dt, scratch, e);
@@ -274,6 +269,7 @@ namespace MCAKernels {
       // plastic work
       double elastic_work = h[H_WORK];
       if (Law != LAW_ELASTIC) elastic_work -= h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
+      if (p.commit) close_row(d.layout, h, row);
       // counted once per owner: the warning halves the sum
       if (out.r * out.r > p.cutsq) totals.nlong += jlocal ? 2 : 1;
 
@@ -325,7 +321,10 @@ namespace MCAKernels {
       double scratch[12];
       link_ends_of(d, lo, hi, p.dt, scratch, e);
       MCALinkForces out;
-      linked_pair_trial(row, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
+      double work[MAX_ROW_SIZE];
+      double *h = open_row(d.layout, row, work, true);
+      linked_pair_trial(h, e, d.material(d.type(lo)), d.material(d.type(hi)), out);
+      close_row(d.layout, h, row);
       add_traction_moment(sums, add, i, out);
       if (j < d.nlocal) {
         const auto to = sums.partner_of(add, j);
@@ -398,12 +397,8 @@ namespace MCAKernels {
       const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
-      double copy[MAX_ROW_SIZE];
-      double *h = row;
-      if (!p.commit) {
-        copy_row(row, copy, d.layout.row_size);
-        h = copy;
-      }
+      double work[MAX_ROW_SIZE];
+      double *h = open_row(d.layout, row, work, p.commit);
       MCALinkEnds e;
       double scratch[12];
       link_ends_of(d, lo, hi, p.dt, scratch, e);
@@ -426,6 +421,7 @@ namespace MCAKernels {
         else
           broken_pair(h, e, m_lo, m_hi, first, out);
       }
+      if (p.commit) close_row(d.layout, h, row);
       const double elastic_work =
           h[H_WORK] - link_plastic_work(h, d.layout) - link_friction_work(h, d.layout);
       const double sign = ilo ? 1.0 : -1.0;
@@ -461,16 +457,18 @@ namespace MCAKernels {
       const int lo = ilo ? i : j, hi = ilo ? j : i;
       const MCABreakRule rule = d.break_rule(d.type(lo), d.type(hi));
       if (rule.criterion == BREAK_NONE) continue;
+      double work[MAX_ROW_SIZE];
+      double *h = open_row(d.layout, row, work, true);
 
       // the link's tractions of this step (mean of the halves), its normal
       // and half lengths, and the stress of its automata
       MCALinkForces tractions;
-      link_mean_tractions(row, tractions);
+      link_mean_tractions(h, tractions);
       MCALinkMotion halves;
-      half_lengths(row, halves);
+      half_lengths(h, halves);
       double s_lo[6], s_hi[6];
       MCABreakInput in;
-      in.n = row + H_NPREV;
+      in.n = h + H_NPREV;
       in.sig = tractions.sig;
       in.t = tractions.t;
       in.q_lo = halves.q_lo;
@@ -488,7 +486,8 @@ namespace MCAKernels {
       const double index = failure_index(rule, in);
       if (!(index >= strength_factor(p.scatter, p.seed, d.tag(lo), d.tag(hi)))) continue;
 
-      break_link(row, d.layout, rule.criterion, p.step);
+      break_link(h, d.layout, rule.criterion, p.step);
+      close_row(d.layout, h, row);
       nbroke++;
     }
     return nbroke;
@@ -504,10 +503,13 @@ namespace MCAKernels {
     const int ff = d.layout.link_offset[PART_FRACTURE];
     int nbroken = 0, ncontacts = 0;
     double released = 0.0;
+    double work[MAX_ROW_SIZE];
     for (int m = 0; m < d.nlinks(i); m++) {
-      const double *row = d.history_row(i, m);
-      if (static_cast<int>(row[H_STATE]) == LINK_CONTACT) ncontacts++;
-      if (!broken(row)) continue;
+      const double *stored = d.history_row(i, m);
+      const int state = stored_state(d.layout, stored);
+      if (state == LINK_CONTACT) ncontacts++;
+      if (state != LINK_BROKEN) continue;
+      const double *row = read_row(d.layout, stored, work);
       nbroken++;
       if (row[ff + F_STEP] == break_step) released += 0.5 * row[ff + F_RELEASED];
     }
@@ -551,7 +553,9 @@ namespace MCAKernels {
         w_lo = plastic_work_density(d.hardening(type_lo), d.epsp(lo));
         w_hi = plastic_work_density(d.hardening(type_hi), d.epsp(hi));
       }
-      if (!mark_heal(row, d.layout, rule, w_lo, w_hi, p.step)) continue;
+      double work[MAX_ROW_SIZE];
+      double *h = open_row(d.layout, row, work, true);
+      if (mark_heal(h, d.layout, rule, w_lo, w_hi, p.step)) close_row(d.layout, h, row);
     }
   }
 
@@ -563,9 +567,12 @@ namespace MCAKernels {
   {
     const int hl = d.layout.link_offset[PART_HEALING];
     const int ca = d.layout.atom_offset[PART_CONTACT], ha = d.layout.atom_offset[PART_HEALING];
+    double work[MAX_ROW_SIZE];
     for (int m = 0; m < d.nlinks(i); m++) {
-      const double *row = d.history_row(i, m);
-      if (row[hl + HL_STEP] != heal_step || !linked(row)) continue;
+      const double *stored = d.history_row(i, m);
+      if (stored_state(d.layout, stored) != LINK_LINKED) continue;
+      const double *row = read_row(d.layout, stored, work);
+      if (row[hl + HL_STEP] != heal_step) continue;
       d.atom_state(i, ca + CA_FRICTION) += row[hl + HL_FRICTION];
       d.atom_state(i, ca + CA_WORK) += row[hl + HL_WORK];
       d.atom_state(i, ha + HA_HEALED) += 1.0;

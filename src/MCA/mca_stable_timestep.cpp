@@ -200,8 +200,9 @@ void MCAStableTimestep::prepare(const Input &in, Comm *comm)
     sqrt_j[i] = sqrt(in.inertia[i]);
     double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     int nlinked = 0;
+    double work[MAX_ROW_SIZE];
     for (int m = 0; m < d.nlinks(i); m++) {
-      const double *row = d.history_row(i, m);
+      const double *row = read_row(d.layout, d.history_row(i, m), work);
       if (linked(row)) nlinked++;
       if (linked(row) || broken(row)) fabric_add(fab, row + H_NPREV);
     }
@@ -260,7 +261,8 @@ void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j, MCALin
 {
   const MCAHostLinks &d = in.links;
   j = d.partner(i, m);
-  const double *row = d.history_row(i, m);
+  double work[MAX_ROW_SIZE];
+  const double *row = read_row(d.layout, d.history_row(i, m), work);
   const bool ilo = d.tag(i) < d.tag(j);
   const double chi = face_moment_factor(in.packing[ilo ? i : j]);
   link_tangent(row, ilo, in.material[in.type[i]], in.material[in.type[j]], chi, predicted[i] > 0.0,

@@ -60,6 +60,8 @@ static constexpr double RESTART_FRACTURE = -5.0;
 static constexpr double RESTART_CONTACTS = -6.0;
 // then the healing criteria of the type pairs
 static constexpr double RESTART_HEALING = -7.0;
+// then the precision of the rows after the parts of the link model
+static constexpr double RESTART_PRECISION = -8.0;
 // the id of the contact neighbor list among the pair style's requests
 static constexpr int CONTACT_LIST_ID = 1;
 
@@ -175,6 +177,7 @@ void PairMCA::allocate()
 void PairMCA::settings(int narg, char **arg)
 {
   std::vector<std::string> chosen;
+  bool mixed = false;
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "tolerance") == 0) {
@@ -192,6 +195,13 @@ void PairMCA::settings(int narg, char **arg)
       cutoff_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (cutoff_user <= 0.0)
         error->all(FLERR, "Pair style mca cutoff must be > 0, got {}", arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "precision") == 0) {
+      // how the link rows are stored (mca_row_codec.h); the arithmetic is double
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style mca precision", error);
+      if (strcmp(arg[iarg + 1], "mixed") != 0 && strcmp(arg[iarg + 1], "double") != 0)
+        error->all(FLERR, "Pair style mca precision must be double or mixed, got {}",
+                   arg[iarg + 1]);
+      mixed = strcmp(arg[iarg + 1], "mixed") == 0;
     } else if (strcmp(arg[iarg], "scatter") == 0) {
       // scatter w seed: strength factors of the links uniform in [1 - w, 1 + w]
       if (iarg + 3 > narg)
@@ -224,12 +234,13 @@ void PairMCA::settings(int narg, char **arg)
         if (slots.find(p.slot) == std::string::npos) slots += std::string(", ") + p.slot;
       error->all(FLERR,
                  "Unknown pair_style mca keyword {} (allowed: tolerance, capacity, cutoff, "
-                 "scatter{})",
+                 "precision, scatter{})",
                  arg[iarg], slots);
     }
     iarg += 2;
   }
   select_parts(chosen);
+  model.set_mixed(mixed);
 }
 
 bool PairMCA::plastic() const
@@ -345,7 +356,7 @@ void PairMCA::select_parts(const std::vector<std::string> &chosen)
   for (const auto &p : MCA_LINK_PARTS) {
     bool on = p.required;
     for (const auto &name : chosen) on = on || name == p.name;
-    if (on) model.add_part(p.part, p.name, p.link_size, p.atom_size);
+    if (on) model.add_part(p.part, p.name, p.link_size, p.atom_size, p.exact_slots);
   }
 }
 
@@ -859,8 +870,7 @@ void PairMCA::check_rigid_bodies()
     for (int i = 0; i < atom->nlocal; i++) {
       if (!(mask[i] & bit)) continue;
       for (int m = 0; m < links->nlinks[i]; m++) {
-        const double *row = links->row(i, m);
-        if (static_cast<int>(row[H_STATE]) != LINK_LINKED) continue;
+        if (stored_state(model.layout(), links->stored_row(i, m)) != LINK_LINKED) continue;
         const int j = atom->map(links->partner[i][m]);
         if (j >= 0 && (mask[j] & bit)) continue;
         crossing++;
@@ -1143,7 +1153,6 @@ void PairMCA::update_contacts()
 {
   if (!contact_list) error->all(FLERR, "Pair mca: contacts without their neighbor list");
   links->to_host();
-  const int row_size = links->row_size;
   const double skin = neighbor->skin;
   const double *radius = atom->radius;
   const tagint *tag = atom->tag;
@@ -1156,12 +1165,13 @@ void PairMCA::update_contacts()
   bool changed = false;
 
   // contacts beyond reach go (the last row takes the place of one)
+  double work[MAX_ROW_SIZE];
   for (int i = 0; i < nlocal; i++) {
     int &n = links->nlinks[i];
     double *state = links->atom_state[i];
     for (int m = n - 1; m >= 0; m--) {
-      double *row = links->row(i, m);
-      if (static_cast<int>(row[H_STATE]) != LINK_CONTACT) continue;
+      if (stored_state(model.layout(), links->stored_row(i, m)) != LINK_CONTACT) continue;
+      const double *row = links->read_row(i, m, work);
       const int j = atom->map(links->partner[i][m]);
       if (j >= 0) {
         const double reach = row[H_R0] + skin;
@@ -1220,9 +1230,9 @@ void PairMCA::update_contacts()
     for (int m = 0; m < n && !known; m++) known = links->partner[i][m] == tag[j];
     if (known) continue;
     // (both ends of a local pair make the row: the partner cache keeps one)
-    double *row = links->new_row(i, n);
-    for (int k = 0; k < row_size; k++) row[k] = 0.0;
+    double row[MAX_ROW_SIZE] = {};
     init_contact_row(i, j, row);
+    links->add_row(i, n, row);
     links->partner[i][n] = tag[j];
     n++;
   }
@@ -1306,11 +1316,13 @@ void PairMCA::forget_broken_links()
   const int ff = model.layout().link_offset[PART_FRACTURE];
   const double last_step = static_cast<double>(update->ntimestep) - 1.0;
   bool changed = false;
+  double work[MAX_ROW_SIZE];
   for (int i = 0; i < atom->nlocal; i++) {
     int &n = links->nlinks[i];
     double *state = links->atom_state[i];
     for (int m = n - 1; m >= 0; m--) {
-      double *row = links->row(i, m);
+      if (stored_state(model.layout(), links->stored_row(i, m)) != LINK_BROKEN) continue;
+      const double *row = links->read_row(i, m, work);
       // (not before the first step of the broken pair: finish_break)
       if (!broken(row) || row[H_RPREV] <= cut_global || row[ff + F_STEP] >= last_step) continue;
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
@@ -1522,7 +1534,7 @@ void PairMCA::read_restart(FILE *fp)
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
-  fwrite(&RESTART_HEALING, sizeof(double), 1, fp);
+  fwrite(&RESTART_PRECISION, sizeof(double), 1, fp);
   fwrite(&tolerance_default, sizeof(double), 1, fp);
   fwrite(&cutoff_user, sizeof(double), 1, fp);
   fwrite(&capacity_user, sizeof(int), 1, fp);
@@ -1531,6 +1543,8 @@ void PairMCA::write_restart_settings(FILE *fp)
   const int len = names.size() + 1;
   fwrite(&len, sizeof(int), 1, fp);
   fwrite(names.c_str(), sizeof(char), len, fp);
+  const int mixed = model.mixed() ? 1 : 0;
+  fwrite(&mixed, sizeof(int), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1540,7 +1554,8 @@ void PairMCA::read_restart_settings(FILE *fp)
   double first = 0.0;
   if (comm->me == 0) utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&first, 1, MPI_DOUBLE, 0, world);
-  restart_healing = (first == RESTART_HEALING);
+  const bool restart_precision = (first == RESTART_PRECISION);
+  restart_healing = restart_precision || (first == RESTART_HEALING);
   restart_contacts = restart_healing || (first == RESTART_CONTACTS);
   restart_fracture = restart_contacts || (first == RESTART_FRACTURE);
   restart_tables = restart_fracture || (first == RESTART_HARDENING);
@@ -1576,7 +1591,13 @@ void PairMCA::read_restart_settings(FILE *fp)
                    "version does not know",
                    name);
   }
+  // (files of earlier versions: double)
+  int mixed = 0;
+  if (restart_precision && comm->me == 0)
+    utils::sfread(FLERR, &mixed, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&mixed, 1, MPI_INT, 0, world);
   select_parts(chosen);
+  model.set_mixed(mixed != 0);
 }
 
 /* ---------------------------------------------------------------------- */

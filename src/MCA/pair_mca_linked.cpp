@@ -61,12 +61,17 @@ void PairMCALinked::init_links()
   links = dynamic_cast<FixMCALinks *>(MCACompat::fix_by_id(modify, FIX_LINKS_ID));
   if (!links)
     links = dynamic_cast<FixMCALinks *>(modify->add_fix(
-        fmt::format("{} all {} {}", FIX_LINKS_ID, links_fix_style(), model.describe())));
+        fmt::format("{} all {} {}", FIX_LINKS_ID, links_fix_style(), model.fix_arguments())));
   if (!links->model.same_blocks(model))
     error->all(FLERR,
                "{}: the link model ({}) differs from the one the links were made with ({}); "
                "write a restart file and read it with the new model",
                label, model.describe(), links->model.describe());
+  if (links->model.mixed() != model.mixed())
+    error->all(FLERR,
+               "{}: precision {} differs from the precision the links are stored in ({}); "
+               "write a restart file and read it with the new precision",
+               label, model.precision(), links->model.precision());
 }
 
 /* ----------------------------------------------------------------------
@@ -123,7 +128,6 @@ void PairMCALinked::create_links()
   }
   links->set_capacity(capacity_user > 0 ? capacity_user : MAX(nmostall, 1));
 
-  const int row_size = links->row_size;
   links->to_host();
   links->reserve_rows(nrows);
   bigint nlocal_links = 0;
@@ -142,9 +146,9 @@ void PairMCALinked::create_links()
       for (int k = 0; k < n; k++)
         if (links->partner[i][k] == tag[j]) duplicate = 1;
       if (evaluates(i, j)) {
-        double *row = links->new_row(i, n);
-        for (int k = 0; k < row_size; k++) row[k] = 0.0;
+        double row[MAX_ROW_SIZE] = {};
         init_link_row(i, j, row);
+        links->add_row(i, n, row);
       } else {
         links->slot[i][n] = -1;
       }
@@ -167,9 +171,9 @@ void PairMCALinked::create_links()
       // (not linked the other way: a row of its own, and the partner cache
       // stops the run)
       if (links->slot[i][m] < 0) {
-        double *row = links->new_row(i, m);
-        for (int k = 0; k < row_size; k++) row[k] = 0.0;
+        double row[MAX_ROW_SIZE] = {};
         init_link_row(i, j, row);
+        links->add_row(i, m, row);
       }
     }
   }

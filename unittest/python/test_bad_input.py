@@ -171,6 +171,16 @@ CASES = [
      r"tolerance must be in \[0, 0.5\), got 0.7"),
     ("pair capacity", BOX + "pair_style mca capacity 0\n", r"capacity must be in \[1, 64\]"),
     ("pair cutoff", BOX + "pair_style mca cutoff -1\n", r"cutoff must be > 0"),
+    ("pair precision", BOX + "pair_style mca precision single\n",
+     r"Pair style mca precision must be double or mixed, got single"),
+    ("pair precision missing", BOX + "pair_style mca precision\n",
+     r"Illegal pair_style mca precision command: missing argument"),
+    # the links exist in one precision: another needs a restart file
+    ("pair precision changed", BOX + "comm_modify vel yes\npair_style mca\n"
+     "pair_coeff * * E 1e9 nu 0.3 rho 1\nrun 0\npair_style mca precision mixed\n"
+     "pair_coeff * * E 1e9 nu 0.3 rho 1\nrun 0\n",
+     r"Pair mca: precision mixed differs from the precision the links are stored in \(double\); "
+     r"write a restart file and read it with the new precision"),
     ("pair E", BOX + "pair_style mca\npair_coeff * * E 0 nu 0.3 rho 2700\n",
      r"Young's modulus E must be > 0"),
     ("pair nu high", BOX + "pair_style mca\npair_coeff * * E 1e9 nu 0.5 rho 2700\n",

@@ -72,6 +72,29 @@ def test_pareto_front_and_cheapest():
     assert pareto.pareto_front(costs + [2.5], errors + [0.019]) == [6, 0, 2, 7, 4]
 
 
+def test_precision_table_pairs_the_cases():
+    """The table of precision mixed against double pairs each mixed run
+    with the double run of the same case (scene, resolution, fraction,
+    mode) and reports the largest change of each error and the cost ratio;
+    a mixed run without its double case is left out, and without mixed
+    runs there is no table."""
+    def row(n, precision, cost, e, nu, mode="cpu"):
+        return {"scene": "cube", "resolution": n, "fraction": 0.9, "mode": mode,
+                "precision": precision, "core_seconds": cost, "E_error": e, "nu_error": nu}
+    rows = [row(4, "double", 1.0, -0.008, 0.002), row(4, "mixed", 1.1, -0.008 + 3e-8, 0.002),
+            row(10, "double", 10.0, -0.001, 1e-4), row(10, "mixed", 12.0, -0.001, 1e-4 - 5e-8),
+            row(6, "mixed", 1.0, 0.5, 0.5)]
+    lines = pareto.precision_table(rows)
+    cube = {line.split("|")[2].strip(): line.split("|")[3:7] for line in lines
+            if line.startswith("| cube")}
+    assert float(cube["E_error"][0]) == pytest.approx(3e-8, rel=1e-3)
+    assert float(cube["nu_error"][0]) == pytest.approx(5e-8, rel=1e-3)
+    assert cube["E_error"][1].strip() == "0.001 - 0.008"
+    assert cube["E_error"][2].strip() == "2"
+    assert cube["E_error"][3].strip() == "1.100 - 1.200"
+    assert pareto.precision_table([r for r in rows if r["precision"] == "double"]) == []
+
+
 @pytest.mark.parametrize("loss", [0.0, 0.004, 0.09])
 def test_amplitude_loss_of_a_damped_oscillator(loss):
     period = 0.37
