@@ -10,7 +10,9 @@ doc/src/pair_mca.rst "Precision of the link rows").
   (contacts healing into links) stay within TOL_MIXED of the double run,
   and differ from it (the option acts);
 * the breaks and heals of those scenes are the same events at the same
-  steps (the criteria read values that differ by 1e-7 of their margins);
+  steps (every automaton's count of links and of pushing contacts agrees
+  at every dump; a criterion met within 1e-7 of its threshold would show
+  here, and none is in these scenes);
 * a restart file holds the rows as doubles: a mixed run continues from
   one bit for bit, and the file read with precision double gives the
   forces of the mixed rows bit for bit at the setup (the double row holds
