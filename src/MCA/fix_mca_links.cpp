@@ -393,12 +393,12 @@ void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
 
 int FixMCALinks::pack_exchange(int i, double *buf)
 {
-  return pack_record(i, buf, true);
+  return pack_record(i, buf, RECORD_STORED);
 }
 
 // the record of atom i, with its rows as they are stored (a move to
 // another processor) or as the law reads them (a restart file)
-int FixMCALinks::pack_record(int i, double *buf, bool stored)
+int FixMCALinks::pack_record(int i, double *buf, RecordRows record)
 {
   to_host();
   int m = 0;
@@ -406,7 +406,7 @@ int FixMCALinks::pack_record(int i, double *buf, bool stored)
   for (int k = 0; k < atom_size; k++) buf[m++] = atom_state[i][k];
   for (int k = 0; k < nlinks[i]; k++) {
     buf[m++] = ubuf(partner[i][k]).d;
-    if (stored) {
+    if (record == RECORD_STORED) {
       memcpy(&buf[m], stored_row(i, k), stored_size * sizeof(double));
       m += stored_size;
     } else {
@@ -544,7 +544,7 @@ void FixMCALinks::restart(char *buf)
 
 int FixMCALinks::pack_restart(int i, double *buf)
 {
-  const int n = pack_record(i, &buf[1], false);
+  const int n = pack_record(i, &buf[1], RECORD_LAW);
   buf[0] = n + 1;
   return n + 1;
 }

@@ -125,11 +125,11 @@ class FixMCALinks : public Fix {
   // restart record has one more value: its length)
   int values_per_atom(int nlink, int width) const { return 1 + atom_size + nlink * (1 + width); }
   enum RecordRows { RECORD_STORED, RECORD_LAW, RECORD_LAYOUT1 };
-  int pack_record(int i, double *buf, bool stored);
+  int pack_record(int i, double *buf, RecordRows record);
   // the blocks of the restart file being read, where its rows are in
   // history layout 1 (converted as they are read); empty otherwise
   MCALinkModel layout1_file;
-  int unpack_record(int nlocal, const double *buf, RecordRows rows);
+  int unpack_record(int nlocal, const double *buf, RecordRows from);
   void convert_layout1_row(const double *old, double *row) const;
 };
 

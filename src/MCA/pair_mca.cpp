@@ -1324,7 +1324,7 @@ void PairMCA::forget_broken_links()
       if (stored_state(model.layout(), links->stored_row(i, m)) != LINK_BROKEN) continue;
       const double *row = links->read_row(i, m, work);
       // (not before the first step of the broken pair: finish_break)
-      if (!broken(row) || row[H_RPREV] <= cut_global || row[ff + F_STEP] >= last_step) continue;
+      if (row[H_RPREV] <= cut_global || row[ff + F_STEP] >= last_step) continue;
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
       if (cause > BREAK_NONE && cause < NBREAK) state[fa + FA_FORGOTTEN + cause - 1] += 1.0;
       state[fa + FA_RELEASED] += row[ff + F_RELEASED];
