@@ -144,13 +144,14 @@ double ComputeMCAAtom::value(int i, int w)
   int n = 0;
   double work[MCAKernels::MAX_ROW_SIZE];
   for (int m = 0; m < links->nlinks[i]; m++) {
-    const double *row = links->read_row(i, m, work);
-    if (static_cast<int>(row[MCAKernels::H_STATE]) != state) continue;
-    if (w == CONTACTS &&
-        !(row[MCAKernels::H_LO + MCAKernels::HALF_SIG] +
-              row[MCAKernels::H_HI + MCAKernels::HALF_SIG] <
-          0.0))
-      continue;
+    if (links->link_state(i, m) != state) continue;
+    if (w == CONTACTS) {
+      const double *row = links->read_row(i, m, work);
+      if (!(row[MCAKernels::H_LO + MCAKernels::HALF_SIG] +
+                row[MCAKernels::H_HI + MCAKernels::HALF_SIG] <
+            0.0))
+        continue;
+    }
     n++;
   }
   return n;

@@ -83,8 +83,8 @@ void ComputeMCAFracture::compute_vector()
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     for (int m = 0; m < links->nlinks[i]; m++) {
+      if (links->link_state(i, m) != LINK_BROKEN) continue;
       const double *row = links->read_row(i, m, work);
-      if (!broken(row)) continue;
       const int cause = static_cast<int>(row[ff + F_CAUSE]);
       if (cause > BREAK_NONE && cause < NBREAK) local[cause] += 1.0;
       local[NVALUES - 1] += row[ff + F_RELEASED];

@@ -22,6 +22,7 @@ FixStyle(MCA_LINKS,FixMCALinks);
 
 #include "fix.h"
 #include "mca_link_model.h"
+#include "mca_row_codec.h"
 
 namespace LAMMPS_NS {
 
@@ -84,8 +85,13 @@ class FixMCALinks : public Fix {
 
   int created;    // 1 once the links have been made (kept in restart files)
 
-  // the stored row of link m of atom i (mca_row_codec.h)
+  // the stored row of link m of atom i (mca_row_codec.h), and its state
+  // (LinkState) without decoding the rest
   double *stored_row(int i, int m) const { return rows[slot[i][m]]; }
+  int link_state(int i, int m) const
+  {
+    return MCAKernels::stored_state(model.layout(), stored_row(i, m));
+  }
   // the row of link m of atom i as the law reads it: the stored row, or
   // decoded into work (MAX_ROW_SIZE doubles)
   const double *read_row(int i, int m, double *work) const;

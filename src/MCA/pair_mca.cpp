@@ -870,7 +870,7 @@ void PairMCA::check_rigid_bodies()
     for (int i = 0; i < atom->nlocal; i++) {
       if (!(mask[i] & bit)) continue;
       for (int m = 0; m < links->nlinks[i]; m++) {
-        if (stored_state(model.layout(), links->stored_row(i, m)) != LINK_LINKED) continue;
+        if (links->link_state(i, m) != LINK_LINKED) continue;
         const int j = atom->map(links->partner[i][m]);
         if (j >= 0 && (mask[j] & bit)) continue;
         crossing++;
@@ -1170,7 +1170,7 @@ void PairMCA::update_contacts()
     int &n = links->nlinks[i];
     double *state = links->atom_state[i];
     for (int m = n - 1; m >= 0; m--) {
-      if (stored_state(model.layout(), links->stored_row(i, m)) != LINK_CONTACT) continue;
+      if (links->link_state(i, m) != LINK_CONTACT) continue;
       const double *row = links->read_row(i, m, work);
       const int j = atom->map(links->partner[i][m]);
       if (j >= 0) {
@@ -1321,7 +1321,7 @@ void PairMCA::forget_broken_links()
     int &n = links->nlinks[i];
     double *state = links->atom_state[i];
     for (int m = n - 1; m >= 0; m--) {
-      if (stored_state(model.layout(), links->stored_row(i, m)) != LINK_BROKEN) continue;
+      if (links->link_state(i, m) != LINK_BROKEN) continue;
       const double *row = links->read_row(i, m, work);
       // (not before the first step of the broken pair: finish_break)
       if (row[H_RPREV] <= cut_global || row[ff + F_STEP] >= last_step) continue;
