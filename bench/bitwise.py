@@ -15,7 +15,9 @@ of id, type, x, image, v, f, omega, torque and the compute mca/atom values
 %.17g, are added, and after the run the estimate of the stable time step
 (compute mca/timestep: dt_c, omega, zeta, %.17g).  Compared byte for byte:
 the thermo lines of the log, that estimate and every file the run writes
-(the dump, the examples' .dat files).
+(the dump, the examples' .dat files).  A change meant to move only the
+round-off of the estimate (its own arithmetic) is checked with
+--estimate-rtol R: an estimate within R relative is reported, not counted.
 Where they differ, each numeric column's max absolute difference and that
 over the column's largest |value| (relative) are reported.  A scene that
 fails in both builds (rolling on LAMMPS 2021: fix wall/gran needs atom_style
@@ -23,6 +25,7 @@ sphere) is listed as n/a, not counted as a difference.
 
     /usr/bin/python3 bitwise.py --base DIR --new DIR [--nsteps 200]
         [--modes cpu,cpu2,kk1,kk2] [--scenes a,b] [--out FILE.md] [--keep DIR]
+        [--estimate-rtol R]
 
 DIR holds an lmp (and, for a shared build, liblammps.so*).  Exit status 0
 if all is identical, 1 otherwise.
@@ -153,8 +156,12 @@ def run(lmp, scene, mode, nsteps, cwd, extra=""):
     thermo, inside = [], False
     for line in open(os.path.join(cwd, "log.lammps")).read().splitlines():
         inside = (inside or line.split()[:1] == ["Step"]) and not line.startswith("Loop time")
-        # and pair mca's estimate of the stable time step, printed after it
-        if inside or line.startswith("BITWISE stable time step"):
+        # pair mca's estimate of the stable time step, printed after it: an
+        # output of its own (its three numbers under a header)
+        if line.startswith("BITWISE stable time step"):
+            t = line.split()
+            outputs["estimate"] = f"dt omega zeta\n{t[4]} {t[6]} {t[8]}"
+        elif inside:
             thermo.append(line)
     outputs["thermo"] = "\n".join(thermo)
     return outputs
@@ -192,14 +199,16 @@ def column_diffs(a, b):
     return text or "same numbers, other text", max(rel.values(), default=0.0)
 
 
-def compare(base, new):
-    """(identical: True/False/None if both failed, max rel difference, details)."""
+def compare(base, new, estimate_rtol=0.0):
+    """(identical: True/False/None if both failed, max rel difference, details).
+    An estimate of the stable time step within estimate_rtol (relative, of
+    each of its numbers) is listed in the details but is no difference."""
     if isinstance(base, str) or isinstance(new, str):
         if isinstance(base, str) and isinstance(new, str):
             return None, float("nan"), [f"both fail: {base}"]
         return False, float("nan"), [f"{side}: {out if isinstance(out, str) else 'ran'}"
                                      for side, out in (("base", base), ("new", new))]
-    details, worst = [], 0.0
+    details, tolerated, worst = [], [], 0.0
     for name in sorted(set(base) | set(new)):
         if base.get(name) == new.get(name):
             continue
@@ -209,9 +218,12 @@ def compare(base, new):
             text, rel = "binary files differ", float("inf")
         else:
             text, rel = column_diffs(base[name], new[name])
+        if name == "estimate" and rel <= estimate_rtol:
+            tolerated.append(f"{name}: {text} (within --estimate-rtol {estimate_rtol:g})")
+            continue
         details.append(f"{name}: {text}")
         worst = max(worst, rel)
-    return not details, worst, details
+    return not details, worst, details + tolerated
 
 
 def main():
@@ -223,6 +235,10 @@ def main():
     ap.add_argument("--scenes", default=",".join(SCENES))
     ap.add_argument("--out", help="markdown file for the table")
     ap.add_argument("--keep", help="keep the run directories here (default: a temporary one)")
+    ap.add_argument("--estimate-rtol", type=float, default=0.0,
+                    help="a change of the stable time step estimate (dt, omega, zeta) up to "
+                    "this relative size is reported but not counted as a difference (a "
+                    "change meant to move only the estimate's round-off; default 0)")
     ap.add_argument("--new-cmd", default="", help="debug: LAMMPS command(s) added before the "
                     "run of the new build only, to see that differences are found")
     args = ap.parse_args()
@@ -243,7 +259,7 @@ def main():
             out = {side: run(lmp[side], scene, mode, args.nsteps,
                              os.path.join(work, scene, mode, side),
                              args.new_cmd if side == "new" else "") for side in lmp}
-            same, rel, details = compare(out["base"], out["new"])
+            same, rel, details = compare(out["base"], out["new"], args.estimate_rtol)
             failed |= same is False
             cell = {True: "yes", False: "**no**", None: "n/a"}[same]
             rows.append(f"| {scene} | {mode} | {cell} | {rel:.3g} | {'<br>'.join(details)} |")
@@ -253,6 +269,8 @@ def main():
                 print("    " + line)
     summary = (f"{'DIFFERENCES' if failed else 'all identical'}: base {lmp['base']}, new "
                f"{lmp['new']}, {args.nsteps} steps, {time.time() - start:.0f} s")
+    if args.estimate_rtol > 0.0:
+        summary += f" (the estimate of the stable time step to {args.estimate_rtol:g} relative)"
     print(summary)
     if args.out:
         with open(args.out, "w") as f:

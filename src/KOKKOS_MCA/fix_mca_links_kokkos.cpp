@@ -58,7 +58,8 @@ FixMCALinksKokkos::~FixMCALinksKokkos()
   memoryKK->destroy_kokkos(k_nlinks, nlinks);
   memoryKK->destroy_kokkos(k_partner, partner);
   memoryKK->destroy_kokkos(k_slot, slot);
-  memoryKK->destroy_kokkos(k_rows, rows);
+  k_rows = MCAKokkos::dual_double_2d();
+  rows = nullptr;
   memoryKK->destroy_kokkos(k_atom_state, atom_state);
 }
 
@@ -76,7 +77,12 @@ void FixMCALinksKokkos::allocate_links(int nmax)
 void FixMCALinksKokkos::grow_pool(int n)
 {
   to_host();
-  memoryKK->grow_kokkos(k_rows, rows, n, stored_size, "mca/links:rows");
+  // (a flat host pool, as the base class's: no array of row pointers)
+  if (k_rows.extent(0) == 0)
+    k_rows = MCAKokkos::dual_double_2d("mca/links:rows", n, stored_size);
+  else
+    k_rows.resize(n, stored_size);
+  rows = k_rows.view_host().data();
   maxrows = n;
   host_changed();
 }

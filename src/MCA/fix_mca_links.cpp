@@ -219,7 +219,8 @@ void FixMCALinks::allocate_links(int nmax)
 // room for n rows in the pool, keeping those in use
 void FixMCALinks::grow_pool(int n)
 {
-  memory->grow(rows, n, stored_size, "mca/links:rows");
+  rows = static_cast<double *>(memory->srealloc(
+      rows, static_cast<bigint>(n) * stored_size * sizeof(double), "mca/links:rows"));
   maxrows = n;
 }
 
@@ -229,7 +230,7 @@ double *FixMCALinks::new_row(int i, int m)
 {
   if (nrows == maxrows) grow_pool(MAX(1024, nrows + nrows / 4));
   slot[i][m] = nrows;
-  double *row = rows[nrows++];
+  double *row = pool_row(nrows++);
   // (zeros: a mixed row may have a float of padding)
   for (int k = 0; k < stored_size; k++) row[k] = 0.0;
   return row;
@@ -288,7 +289,7 @@ bool FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
       if (place[s] >= 0) {
         const int shared = s;
         double *copy = new_row(i, m);
-        std::copy(rows[shared], rows[shared] + stored_size, copy);
+        std::copy(pool_row(shared), pool_row(shared) + stored_size, copy);
         s = slot[i][m];
         place.push_back(-1);
       }
@@ -306,14 +307,14 @@ bool FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
       if (place[s] < 0 || moved[s]) continue;
       moved[s] = 1;
       if (place[s] == s) continue;
-      std::copy(rows[s], rows[s] + stored_size, carry.data());
+      std::copy(pool_row(s), pool_row(s) + stored_size, carry.data());
       int at = place[s];
       while (place[at] >= 0 && !moved[at]) {
-        std::swap_ranges(carry.begin(), carry.end(), rows[at]);
+        std::swap_ranges(carry.begin(), carry.end(), pool_row(at));
         moved[at] = 1;
         at = place[at];
       }
-      std::copy(carry.begin(), carry.end(), rows[at]);
+      std::copy(carry.begin(), carry.end(), pool_row(at));
     }
     for (int i = 0; i < nlocal; i++)
       for (int m = 0; m < nlinks[i]; m++)

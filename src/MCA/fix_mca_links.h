@@ -75,7 +75,7 @@ class FixMCALinks : public Fix {
   int *nlinks;            // number of links of each atom
   tagint **partner;       // atom ID of the partner of each link
   int **slot;             // the row of each link in the pool
-  double **rows;          // the pool: stored_size doubles per row (mca_row_codec.h)
+  double *rows;           // the pool: maxrows rows of stored_size doubles (mca_row_codec.h)
   int nrows, maxrows;     // rows in use, allocated
   double **atom_state;    // atom_size doubles of law state per automaton
 
@@ -87,7 +87,9 @@ class FixMCALinks : public Fix {
 
   // the stored row of link m of atom i (mca_row_codec.h), and its state
   // (LinkState) without decoding the rest
-  double *stored_row(int i, int m) const { return rows[slot[i][m]]; }
+  double *stored_row(int i, int m) const { return pool_row(slot[i][m]); }
+  // row s of the pool (flat: no array of row pointers, 8 bytes a row)
+  double *pool_row(int s) const { return rows + static_cast<std::size_t>(s) * stored_size; }
   int link_state(int i, int m) const
   {
     return MCAKernels::stored_state(model.layout(), stored_row(i, m));

@@ -160,11 +160,11 @@ void MCAStableTimestep::grow(int n)
   memory->destroy(predicted);
   memory->destroy(motion);
   memory->destroy(sums);
-  memory->create(finv, nmax, 6, "mca/timestep:finv");
+  memory->create(finv, 6 * nmax, "mca/timestep:finv");
   memory->create(hpred, nmax, "mca/timestep:hpred");
   memory->create(predicted, nmax, "mca/timestep:predicted");
-  memory->create(motion, nmax, 6, "mca/timestep:motion");
-  memory->create(sums, nmax, 2, "mca/timestep:sums");
+  memory->create(motion, 6 * nmax, "mca/timestep:motion");
+  memory->create(sums, 2 * nmax, "mca/timestep:sums");
 }
 
 void MCAStableTimestep::release()
@@ -175,9 +175,7 @@ void MCAStableTimestep::release()
   memory->destroy(motion);
   memory->destroy(sums);
   nmax = 0;
-  for (auto *v : {&sqrt_m, &sqrt_j, &rhs_fwd, &rhs_tr, &diag, &next})
-    std::vector<double>().swap(*v);
-  std::vector<LinkEntry>().swap(entries);
+  for (auto *v : {&rhs_fwd, &rhs_tr, &diag, &next}) std::vector<double>().swap(*v);
   std::vector<JacobiEntry>().swap(jacobi);
 }
 
@@ -193,11 +191,7 @@ void MCAStableTimestep::prepare(const Input &in, Comm *comm)
   grow(atom->nmax);
   const MCAHostLinks &d = in.links;
   const int nlocal = d.nlocal;
-  sqrt_m.resize(nlocal);
-  sqrt_j.resize(nlocal);
   for (int i = 0; i < nlocal; i++) {
-    sqrt_m[i] = sqrt(in.rmass[i]);
-    sqrt_j[i] = sqrt(in.inertia[i]);
     double fab[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     int nlinked = 0;
     double work[MAX_ROW_SIZE];
@@ -211,13 +205,13 @@ void MCAStableTimestep::prepare(const Input &in, Comm *comm)
     hpred[i] = (nc > 0) ? predictor_stiffness(mat.shear, mat.bulk, nc, nlinked) : 0.0;
     predicted[i] = (nlinked > 0 && nc != PACKING_NONE) ? 1.0 : 0.0;
     if (predicted[i] > 0.0)
-      fabric_inverse(fab, finv[i]);
+      fabric_inverse(fab, finv_of(i));
     else
-      for (int k = 0; k < 6; k++) finv[i][k] = 0.0;
+      for (int k = 0; k < 6; k++) finv_of(i)[k] = 0.0;
   }
   stage = STAGE_SETUP;
   comm->estimate_forward_comm();
-  cache_links(in);
+  cache_jacobi_weights(in);
 }
 
 int MCAStableTimestep::pack_forward_comm(int n, int *list, double *buf)
@@ -226,13 +220,13 @@ int MCAStableTimestep::pack_forward_comm(int n, int *list, double *buf)
   for (int ii = 0; ii < n; ii++) {
     const int i = list[ii];
     if (stage == STAGE_SETUP) {
-      for (int k = 0; k < 6; k++) buf[m++] = finv[i][k];
+      for (int k = 0; k < 6; k++) buf[m++] = finv_of(i)[k];
       buf[m++] = hpred[i];
     } else if (stage == STAGE_MOTION) {
-      for (int k = 0; k < 6; k++) buf[m++] = motion[i][k];
+      for (int k = 0; k < 6; k++) buf[m++] = motion_of(i)[k];
     } else {
-      buf[m++] = sums[i][0];
-      buf[m++] = sums[i][1];
+      buf[m++] = sums_of(i)[0];
+      buf[m++] = sums_of(i)[1];
     }
   }
   return m;
@@ -243,21 +237,22 @@ void MCAStableTimestep::unpack_forward_comm(int n, int first, double *buf)
   int m = 0;
   for (int i = first; i < first + n; i++) {
     if (stage == STAGE_SETUP) {
-      for (int k = 0; k < 6; k++) finv[i][k] = buf[m++];
+      for (int k = 0; k < 6; k++) finv_of(i)[k] = buf[m++];
       hpred[i] = buf[m++];
-      predicted[i] = (finv[i][0] + finv[i][1] + finv[i][2] > 0.0) ? 1.0 : 0.0;
+      predicted[i] = (finv_of(i)[0] + finv_of(i)[1] + finv_of(i)[2] > 0.0) ? 1.0 : 0.0;
     } else if (stage == STAGE_MOTION) {
-      for (int k = 0; k < 6; k++) motion[i][k] = buf[m++];
+      for (int k = 0; k < 6; k++) motion_of(i)[k] = buf[m++];
     } else {
-      sums[i][0] = buf[m++];
-      sums[i][1] = buf[m++];
+      sums_of(i)[0] = buf[m++];
+      sums_of(i)[1] = buf[m++];
     }
   }
 }
 
 /* ---------------------------------------------------------------------- */
 
-void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j, MCALinkTangent &t) const
+inline void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j,
+                                          MCALinkTangent &t) const
 {
   const MCAHostLinks &d = in.links;
   j = d.partner(i, m);
@@ -266,98 +261,64 @@ void MCAStableTimestep::tangent_of(const Input &in, int i, int m, int &j, MCALin
   const bool ilo = d.tag(i) < d.tag(j);
   const double chi = face_moment_factor(in.packing[ilo ? i : j]);
   link_tangent(row, ilo, in.material[in.type[i]], in.material[in.type[j]], chi, predicted[i] > 0.0,
-               predicted[j] > 0.0, finv[i], finv[j], hpred[i], hpred[j], in.damping, in.friction,
-               t);
+               predicted[j] > 0.0, finv_of(i), finv_of(j), hpred[i], hpred[j], in.damping,
+               in.friction, t);
 }
 
-double MCAStableTimestep::end_weight(int nlocal, int j, bool swapped)
+double MCAStableTimestep::link_weight(int nlocal, int j)
 {
-  if (j >= nlocal) return 0.5;
-  return swapped ? 0.0 : 1.0;
+  return (j >= nlocal) ? 0.5 : 1.0;
 }
 
 /* ----------------------------------------------------------------------
-   the links, with all the estimate needs of those that act (the inverse
-   fabric tensors and predictor stiffnesses of the ghosts are known): an
-   entry at each row of the pool, made by the end that evaluates its link
-   (the rows of the pool are shared, FixMCALinks::share_rows)
+   the weights of the Jacobi steps (the inverse fabric tensors and
+   predictor stiffnesses of the ghosts are known): an entry at each row of
+   the pool, made by the end that evaluates its link (the rows of the pool
+   are shared, FixMCALinks::share_rows)
 ------------------------------------------------------------------------- */
 
-void MCAStableTimestep::cache_links(const Input &in)
+void MCAStableTimestep::cache_jacobi_weights(const Input &in)
 {
   const MCAHostLinks &d = in.links;
-  const int nlocal = d.nlocal;
-  entries.assign(d.nrows, LinkEntry{});
-  jacobi.assign(d.nrows, JacobiEntry{});
+  jacobi.assign(d.nrows, JacobiEntry{0.0f, 0.0f});
   MCALinkTangent t;
   int j;
-  for (int i = 0; i < nlocal; i++)
+  for (int i = 0; i < d.nlocal; i++)
     for (int m = 0; m < d.nlinks(i); m++) {
       if (partner_evaluates(d, i, d.partner(i, m))) continue;
       tangent_of(in, i, m, j, t);
-      if (!t.linked && t.kn == 0.0) continue;
-      LinkEntry &e = entries[d.slot(i, m)];
-      e.flags = ACTS | (t.linked ? LINKED : 0);
-      for (int k = 0; k < 3; k++) e.n[k] = static_cast<float>(t.n[k]);
-      e.q_i = t.q_i;
-      e.q_j = t.q_j;
-      e.kn = t.kn;
-      e.kt = t.kt;
-      e.kb = t.kb;
-      e.a_i = t.a_i;
-      e.a_j = t.a_j;
-      e.beta_i = t.beta_i;
-      e.beta_j = t.beta_j;
-      e.damp = t.damp;
-      e.inv_cn = t.inv_cn;
-      e.inv_ct = t.inv_ct;
+      if (!t.linked) continue;
       // the weights of the partner's mean stress: gamma_i a_j / (A K_j) in
       // the row of i, gamma_j a_i / (A K_i) in the transposed system
       double fn[3];
-      fabric_times(finv[i], t.n, fn);
+      fabric_times(finv_of(i), t.n, fn);
       const double gamma_i = dot3(fn, t.n) / 3.0;
-      fabric_times(finv[j], t.n, fn);
+      fabric_times(finv_of(j), t.n, fn);
       const double gamma_j = dot3(fn, t.n) / 3.0;
       JacobiEntry &w = jacobi[d.slot(i, m)];
-      w.fwd = t.linked ? gamma_i * t.a_j / (t.area * in.material[in.type[j]].bulk) : 0.0;
-      w.tr = t.linked ? gamma_j * t.a_i / (t.area * in.material[in.type[i]].bulk) : 0.0;
+      w.fwd = gamma_i * t.a_j / (t.area * in.material[in.type[j]].bulk);
+      w.tr = gamma_j * t.a_i / (t.area * in.material[in.type[i]].bulk);
     }
 }
 
-template <class Entry, class F>
-void MCAStableTimestep::for_each_end(const MCAHostLinks &d, int i, const std::vector<Entry> &table,
-                                     F f) const
+template <class F> void MCAStableTimestep::for_each_acting(const Input &in, F f) const
 {
-  for (int m = 0; m < d.nlinks(i); m++) {
-    const int j = d.partner(i, m);
-    const Entry &e = table[d.slot(i, m)];
-    if (e.acts()) f(j, e, partner_evaluates(d, i, j));
-  }
-}
-
-MCALinkTangent MCAStableTimestep::tangent(const LinkEntry &e, bool swapped)
-{
+  const MCAHostLinks &d = in.links;
   MCALinkTangent t;
-  for (int k = 0; k < 3; k++) t.n[k] = swapped ? -e.n[k] : e.n[k];
-  t.q_i = swapped ? e.q_j : e.q_i;
-  t.q_j = swapped ? e.q_i : e.q_j;
-  t.kn = e.kn;
-  t.kt = e.kt;
-  t.kb = e.kb;
-  t.a_i = swapped ? e.a_j : e.a_i;
-  t.a_j = swapped ? e.a_i : e.a_j;
-  t.beta_i = swapped ? e.beta_j : e.beta_i;
-  t.beta_j = swapped ? e.beta_i : e.beta_j;
-  t.damp = e.damp;
-  t.inv_cn = e.inv_cn;
-  t.inv_ct = e.inv_ct;
-  t.linked = (e.flags & LINKED) != 0;
-  t.area = t.w_i = t.w_j = 0.0;
-  return t;
+  int j;
+  for (int i = 0; i < d.nlocal; i++)
+    for (int m = 0; m < d.nlinks(i); m++) {
+      if (partner_evaluates(d, i, d.partner(i, m))) continue;
+      tangent_of(in, i, m, j, t);
+      if (t.linked || t.kn != 0.0) f(i, j, t);
+    }
 }
 
-void MCAStableTimestep::jacobi_weights(const JacobiEntry &e, bool swapped, double &fwd, double &tr)
+inline void MCAStableTimestep::jacobi_weights(const MCAHostLinks &d, int i, int m, double &fwd,
+                                              double &tr) const
 {
+  const JacobiEntry &e = jacobi[d.slot(i, m)];
+  const bool swapped = partner_evaluates(d, i, d.partner(i, m));
   fwd = swapped ? e.tr : e.fwd;
   tr = swapped ? e.fwd : e.tr;
 }
@@ -374,8 +335,8 @@ void MCAStableTimestep::set_motion(const Input &in, Comm *comm, const double *x)
 {
   for (int i = 0; i < in.links.nlocal; i++)
     for (int k = 0; k < 3; k++) {
-      motion[i][k] = x[6 * i + k] / sqrt_m[i];
-      motion[i][3 + k] = x[6 * i + 3 + k] / sqrt_j[i];
+      motion_of(i)[k] = x[6 * i + k] / sqrt(in.rmass[i]);
+      motion_of(i)[3 + k] = x[6 * i + 3 + k] / sqrt(in.inertia[i]);
     }
   stage = STAGE_MOTION;
   comm->estimate_forward_comm();
@@ -398,7 +359,7 @@ void MCAStableTimestep::set_motion(const Input &in, Comm *comm, const double *x)
    reverse communication)
 ------------------------------------------------------------------------- */
 
-void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, double *y)
+void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, double keep, double *y)
 {
   const MCAHostLinks &d = in.links;
   const int nlocal = d.nlocal;
@@ -407,105 +368,129 @@ void MCAStableTimestep::apply(const Input &in, Comm *comm, const double *x, doub
   rhs_tr.resize(nlocal);
   diag.resize(nlocal);
 
-  // the right-hand sides and the diagonal
+  // the right-hand sides and the diagonal: the sums s, r and w of each
+  // automaton in rhs_fwd, rhs_tr and diag, q in next
+  next.resize(2 * static_cast<std::size_t>(nlocal));
+  for (int i = 0; i < nlocal; i++) rhs_fwd[i] = rhs_tr[i] = diag[i] = next[2 * i] = 0.0;
+  auto add_sums = [&](int i, int j, const MCALinkTangent &t) {
+    if (!(predicted[i] > 0.0)) return;
+    double dr, slip[3], fn[3];
+    tangent_motion(t, motion_of(i), motion_of(i) + 3, motion_of(j), motion_of(j) + 3, dr, slip);
+    fabric_times(finv_of(i), t.n, fn);
+    const double gamma = dot3(fn, t.n) / 3.0;
+    rhs_fwd[i] += t.beta_i * dr;
+    rhs_tr[i] += t.a_i * dr;
+    next[2 * i] += gamma * dr * t.inv_cn + dot3(slip, fn) * t.inv_ct / 3.0;
+    // (the weight of i's own mean stress: gamma a_i / (A K_i) = gamma w_i D_i)
+    diag[i] += gamma * t.a_i * t.inv_cn / (in.material[in.type[i]].bulk * t.kn);
+  };
+  for_each_acting(in, [&](int i, int j, MCALinkTangent &t) {
+    if (!t.linked) return;
+    add_sums(i, j, t);
+    if (j >= nlocal) return;
+    swap_sides(t);
+    add_sums(j, i, t);
+  });
   bool filter = false;
   for (int i = 0; i < nlocal; i++) {
-    rhs_fwd[i] = rhs_tr[i] = 0.0;
-    diag[i] = 1.0;
-    if (!(predicted[i] > 0.0)) continue;
     const double bulk = in.material[in.type[i]].bulk;
-    double s = 0.0, r = 0.0, q = 0.0, w = 0.0;
-    for_each_end(d, i, entries, [&](int j, const LinkEntry &e, bool swapped) {
-      const MCALinkTangent t = tangent(e, swapped);
-      if (!t.linked) return;
-      double dr, slip[3], fn[3];
-      tangent_motion(t, motion[i], motion[i] + 3, motion[j], motion[j] + 3, dr, slip);
-      fabric_times(finv[i], t.n, fn);
-      const double gamma = dot3(fn, t.n) / 3.0;
-      s += t.beta_i * dr;
-      r += t.a_i * dr;
-      q += gamma * dr * t.inv_cn + dot3(slip, fn) * t.inv_ct / 3.0;
-      // (the weight of i's own mean stress: gamma a_i / (A K_i) = gamma w_i D_i)
-      w += gamma * t.a_i * t.inv_cn / (bulk * t.kn);
-    });
-    rhs_fwd[i] = 2.0 * bulk * s - q;
-    rhs_tr[i] = r / bulk;
+    const double w = diag[i];
+    rhs_fwd[i] = 2.0 * bulk * rhs_fwd[i] - next[2 * i];
+    rhs_tr[i] = rhs_tr[i] / bulk;
     diag[i] = 1.0 + w;
     if (w != 0.0) filter = true;
   }
   for (int i = 0; i < nlocal; i++) {
-    sums[i][0] = rhs_fwd[i] / diag[i];
-    sums[i][1] = rhs_tr[i] / diag[i];
+    sums_of(i)[0] = rhs_fwd[i] / diag[i];
+    sums_of(i)[1] = rhs_tr[i] / diag[i];
   }
 
   // Jacobi steps on both systems (none if no automaton has D != 0)
   int any = filter ? 1 : 0, any_all = 0;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
-  next.resize(2 * static_cast<std::size_t>(nlocal));
   for (int it = 0; any_all && it < MAX_JACOBI; it++) {
     stage = STAGE_SUMS;
     comm->estimate_forward_comm();
     double change = 0.0, size = 0.0;
     for (int i = 0; i < nlocal; i++) {
       double off_f = 0.0, off_t = 0.0;
-      for_each_end(d, i, jacobi, [&](int j, const JacobiEntry &e, bool swapped) {
+      for (int m = 0; m < d.nlinks(i); m++) {
+        const int j = d.partner(i, m);
         double w_fwd, w_tr;
-        jacobi_weights(e, swapped, w_fwd, w_tr);
-        off_f += w_fwd * sums[j][0];
-        off_t += w_tr * sums[j][1];
-      });
+        jacobi_weights(d, i, m, w_fwd, w_tr);
+        off_f += w_fwd * sums_of(j)[0];
+        off_t += w_tr * sums_of(j)[1];
+      }
       next[2 * i] = (rhs_fwd[i] - off_f) / diag[i];
       next[2 * i + 1] = (rhs_tr[i] - off_t) / diag[i];
       change = std::max(
-          change, std::max(fabs(next[2 * i] - sums[i][0]), fabs(next[2 * i + 1] - sums[i][1])));
+          change,
+          std::max(fabs(next[2 * i] - sums_of(i)[0]), fabs(next[2 * i + 1] - sums_of(i)[1])));
       size = std::max(size, std::max(fabs(next[2 * i]), fabs(next[2 * i + 1])));
     }
     for (int i = 0; i < nlocal; i++) {
-      sums[i][0] = next[2 * i];
-      sums[i][1] = next[2 * i + 1];
+      sums_of(i)[0] = next[2 * i];
+      sums_of(i)[1] = next[2 * i + 1];
     }
     double local[2] = {change, size}, all[2];
     MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_MAX, world);
     if (all[0] <= JACOBI_TOL * all[1]) break;
   }
   // p = sm / K
-  for (int i = 0; i < nlocal; i++) sums[i][0] /= in.material[in.type[i]].bulk;
+  for (int i = 0; i < nlocal; i++) sums_of(i)[0] /= in.material[in.type[i]].bulk;
   stage = STAGE_SUMS;
   comm->estimate_forward_comm();
 
+  // the forces and torques of the links (each once, from the end that
+  // evaluates it, for both its local ends), summed in y on top of keep y
+  // in units of force: y = -(keep M^1/2 y + f) / M^1/2
   for (int i = 0; i < nlocal; i++) {
-    double f[3] = {0.0, 0.0, 0.0}, tq[3] = {0.0, 0.0, 0.0};
-    for_each_end(d, i, entries, [&](int j, const LinkEntry &e, bool swapped) {
-      const MCALinkTangent t = tangent(e, swapped);
-      double tension_ms = 0.0, fl[3], tql[3];
-      if (t.linked) {
-        tension_ms = 0.5 * (t.a_i * sums[i][0] + t.a_j * sums[j][0]);
-        // R^T y: the tension 2 K beta - gamma / c_n and the force across
-        // -(1/3) (y_i F_i^-1 n + y_j F_j^-1 n) / c_t of each end
-        double fn_i[3], fn_j[3], tau[3];
-        fabric_times(finv[i], t.n, fn_i);
-        fabric_times(finv[j], t.n, fn_j);
-        const double yi = (predicted[i] > 0.0) ? sums[i][1] : 0.0;
-        const double yj = (predicted[j] > 0.0) ? sums[j][1] : 0.0;
-        const double tension_r = yi *
-                (2.0 * in.material[in.type[i]].bulk * t.beta_i - dot3(fn_i, t.n) / 3.0 * t.inv_cn) +
-            yj * (2.0 * in.material[in.type[j]].bulk * t.beta_j - dot3(fn_j, t.n) / 3.0 * t.inv_cn);
-        for (int c = 0; c < 3; c++) tau[c] = -0.5 * t.inv_ct / 3.0 * (yi * fn_i[c] + yj * fn_j[c]);
-        tangent_load(t, 0.5 * tension_r, tau, fl, tql);
-        for (int c = 0; c < 3; c++) {
-          f[c] += fl[c];
-          tq[c] += tql[c];
-        }
-      }
-      tangent_force(t, motion[i], motion[i] + 3, motion[j], motion[j] + 3, tension_ms, fl, tql);
+    const double sm = sqrt(in.rmass[i]), sj = sqrt(in.inertia[i]);
+    for (int k = 0; k < 3; k++) {
+      y[6 * i + k] *= keep * sm;
+      y[6 * i + 3 + k] *= keep * sj;
+    }
+  }
+  auto add_force = [&](int i, int j, const MCALinkTangent &t) {
+    double *fi = y + 6 * i;
+    double tension_ms = 0.0, fl[3], tql[3];
+    if (t.linked) {
+      tension_ms = 0.5 * (t.a_i * sums_of(i)[0] + t.a_j * sums_of(j)[0]);
+      // R^T y: the tension 2 K beta - gamma / c_n and the force across
+      // -(1/3) (y_i F_i^-1 n + y_j F_j^-1 n) / c_t of each end
+      double fn_i[3], fn_j[3], tau[3];
+      fabric_times(finv_of(i), t.n, fn_i);
+      fabric_times(finv_of(j), t.n, fn_j);
+      const double yi = (predicted[i] > 0.0) ? sums_of(i)[1] : 0.0;
+      const double yj = (predicted[j] > 0.0) ? sums_of(j)[1] : 0.0;
+      const double tension_r =
+          yi * (2.0 * in.material[in.type[i]].bulk * t.beta_i - dot3(fn_i, t.n) / 3.0 * t.inv_cn) +
+          yj * (2.0 * in.material[in.type[j]].bulk * t.beta_j - dot3(fn_j, t.n) / 3.0 * t.inv_cn);
+      for (int c = 0; c < 3; c++) tau[c] = -0.5 * t.inv_ct / 3.0 * (yi * fn_i[c] + yj * fn_j[c]);
+      tangent_load(t, 0.5 * tension_r, tau, fl, tql);
       for (int c = 0; c < 3; c++) {
-        f[c] += fl[c];
-        tq[c] += tql[c];
+        fi[c] += fl[c];
+        fi[3 + c] += tql[c];
       }
-    });
+    }
+    tangent_force(t, motion_of(i), motion_of(i) + 3, motion_of(j), motion_of(j) + 3, tension_ms, fl,
+                  tql);
     for (int c = 0; c < 3; c++) {
-      y[6 * i + c] = -f[c] / sqrt_m[i];
-      y[6 * i + 3 + c] = -tq[c] / sqrt_j[i];
+      fi[c] += fl[c];
+      fi[3 + c] += tql[c];
+    }
+  };
+  for_each_acting(in, [&](int i, int j, MCALinkTangent &t) {
+    add_force(i, j, t);
+    if (j >= nlocal) return;
+    swap_sides(t);
+    add_force(j, i, t);
+  });
+  for (int i = 0; i < nlocal; i++) {
+    const double sm = sqrt(in.rmass[i]), sj = sqrt(in.inertia[i]);
+    for (int k = 0; k < 3; k++) {
+      y[6 * i + k] = -y[6 * i + k] / sm;
+      y[6 * i + 3 + k] = -y[6 * i + 3 + k] / sj;
     }
   }
 }
@@ -612,39 +597,39 @@ MCAStableTimestep::Result MCAStableTimestep::lanczos_estimate(const Input &in, C
 
   // the links that act
   double acting_sum = 0.0;
-  for (int i = 0; i < nlocal; i++)
-    for_each_end(d, i, entries, [&](int j, const LinkEntry &, bool swapped) {
-      acting_sum += end_weight(nlocal, j, swapped);
-    });
+  for_each_acting(in, [&](int, int j, const MCALinkTangent &) {
+    acting_sum += link_weight(nlocal, j);
+  });
   double acting_all = 0.0;
   MPI_Allreduce(&acting_sum, &acting_all, 1, MPI_DOUBLE, MPI_SUM, world);
   res.nlinks = static_cast<bigint>(acting_all + 0.5);
   if (res.nlinks == 0) return res;
 
   const std::size_t n = 6 * static_cast<std::size_t>(nlocal);
-  // the Lanczos steps; with z given, the sum of z_k v_k over its steps
+  // the Lanczos steps; with z given, the sum of z_k v_k over its steps.
+  // Two vectors (Paige's form): v, and w, which holds v_old until A v -
+  // beta v_old replaces it, then the next v until the two are swapped
   std::vector<double> alpha, beta, history;
   auto lanczos = [&](int steps, const std::vector<double> *z, std::vector<double> *ritz) {
-    std::vector<double> v(n);
+    std::vector<double> v(n), w(n, 0.0);
     start_vector(in, v);
-    std::vector<double> v_old(n, 0.0), w(n);
     double beta_old = 0.0, theta = 0.0;
     int k = 0;
+    auto next_vector = [&](double b) {
+      for (std::size_t q = 0; q < n; q++) w[q] /= b;
+      std::swap(v, w);
+      beta_old = b;
+    };
     while (k < steps) {
       if (z)
         for (std::size_t q = 0; q < n; q++) (*ritz)[q] += (*z)[k] * v[q];
-      apply(in, comm, v.data(), w.data());
+      apply(in, comm, v.data(), beta_old, w.data());
       const double a = dot(v, w);
-      for (std::size_t q = 0; q < n; q++) w[q] -= a * v[q] + beta_old * v_old[q];
+      for (std::size_t q = 0; q < n; q++) w[q] -= a * v[q];
       const double b = sqrt(dot(w, w));
       k++;
       if (z) {
-        if (k < steps)
-          for (std::size_t q = 0; q < n; q++) {
-            v_old[q] = v[q];
-            v[q] = w[q] / b;
-          }
-        beta_old = b;
+        if (k < steps) next_vector(b);
         continue;
       }
       alpha.push_back(a);
@@ -659,11 +644,7 @@ MCAStableTimestep::Result MCAStableTimestep::lanczos_estimate(const Input &in, C
             h > STALL_CHECKS && theta - history[h - 1 - STALL_CHECKS] <= VALUE_TOL * theta;
         if (last || settled || b * fabs(y[k - 1]) <= RESIDUAL_TOL * theta) break;
       }
-      for (std::size_t q = 0; q < n; q++) {
-        v_old[q] = v[q];
-        v[q] = w[q] / b;
-      }
-      beta_old = b;
+      next_vector(b);
     }
     return k;
   };
@@ -701,14 +682,14 @@ void MCAStableTimestep::start_vector(const Input &in, std::vector<double> &v) co
   for (int i = 0; i < d.nlocal; i++)
     for (int k = 0; k < 6; k++) {
       v[6 * i + k] = start_component(d.tag(i), k);
-      const double spin = (k >= 3) ? sqrt_j[i] : 0.0;
+      const double spin = (k >= 3) ? sqrt(in.inertia[i]) : 0.0;
       spin_local += spin * spin;
     }
   MPI_Allreduce(&spin_local, &spin_all, 1, MPI_DOUBLE, MPI_SUM, world);
   const double random_norm = sqrt(dot(v, v)), spin_norm = sqrt(spin_all);
   for (int i = 0; i < d.nlocal; i++)
     for (int k = 0; k < 6; k++) {
-      const double spin = (k >= 3) ? sqrt_j[i] : 0.0;
+      const double spin = (k >= 3) ? sqrt(in.inertia[i]) : 0.0;
       v[6 * i + k] = v[6 * i + k] / random_norm + spin / spin_norm;
     }
   const double norm = sqrt(dot(v, v));
@@ -726,15 +707,12 @@ double MCAStableTimestep::damping_ratio(const Input &in, Comm *comm, const std::
   set_motion(in, comm, x.data());
   const MCAHostLinks &d = in.links;
   double damping = 0.0, all = 0.0;
-  for (int i = 0; i < d.nlocal; i++)
-    for_each_end(d, i, entries, [&](int j, const LinkEntry &e, bool swapped) {
-      const double weight = end_weight(d.nlocal, j, swapped);
-      if (weight == 0.0) return;
-      const MCALinkTangent t = tangent(e, swapped);
-      double energy, dissipation;
-      tangent_energy(t, motion[i], motion[i] + 3, motion[j], motion[j] + 3, energy, dissipation);
-      damping += weight * dissipation;
-    });
+  for_each_acting(in, [&](int i, int j, const MCALinkTangent &t) {
+    double energy, dissipation;
+    tangent_energy(t, motion_of(i), motion_of(i) + 3, motion_of(j), motion_of(j) + 3, energy,
+                   dissipation);
+    damping += link_weight(d.nlocal, j) * dissipation;
+  });
   MPI_Allreduce(&damping, &all, 1, MPI_DOUBLE, MPI_SUM, world);
   return omega > 0.0 ? all / (2.0 * omega) : 0.0;
 }

@@ -94,37 +94,30 @@ class MCAStableTimestep : protected Pointers {
   // per atom, local and ghost: inverse fabric tensor, predictor
   // stiffness and whether the mean stress is predicted (sent once), the
   // displacement and rotation of the vector the operator is applied to,
-  // and the two mean-stress sums s and r of each automaton
-  double **finv, *hpred, *predicted, **motion, **sums;
-  // local: square roots of mass and inertia; the right-hand sides and the
-  // diagonal of the mean-stress systems, the next Jacobi iterate
-  std::vector<double> sqrt_m, sqrt_j, rhs_fwd, rhs_tr, diag, next;
+  // and the two mean-stress sums s and r of each automaton (flat arrays
+  // of 6, 1, 1, 6 and 2 values per atom: no arrays of row pointers)
+  double *finv, *hpred, *predicted, *motion, *sums;
+  double *finv_of(int i) const { return finv + 6 * static_cast<std::size_t>(i); }
+  double *motion_of(int i) const { return motion + 6 * static_cast<std::size_t>(i); }
+  double *sums_of(int i) const { return sums + 2 * static_cast<std::size_t>(i); }
+  // local: the right-hand sides and the diagonal of the mean-stress
+  // systems, the next Jacobi iterate
+  std::vector<double> rhs_fwd, rhs_tr, diag, next;
 
-  // the links of the local automata, kept for the Lanczos steps of one
-  // estimate in single precision (an estimate to 1e-4 needs no more; half
-  // the memory), at the index of the link's row in the pool of the links
+  // what the Jacobi steps of the mean-stress systems read of a link, kept
+  // for the steps of one estimate in single precision (an estimate to 1e-4
+  // needs no more) at the index of the link's row in the pool of the links
   // fix: both ends of a link between local automata share that row, so
   // they find the entry there.  It is made by the end that evaluates the
   // link (the lower ID of two local automata, the local automaton of a
-  // link to a ghost); the other end reads it swapped: the normal reversed,
-  // the two sides exchanged (exactly what its own view of the row gives:
-  // every value below is symmetric in the sides)
-  struct LinkEntry {
-    int flags;    // ACTS: a link, or a broken pair that pushes; LINKED: a link
-    float n[3], q_i, q_j, kn, kt, kb, a_i, a_j, beta_i, beta_j, damp, inv_cn, inv_ct;
-    bool acts() const { return (flags & ACTS) != 0; }
-  };
-  enum { LINKED = 1, ACTS = 2 };
-  std::vector<LinkEntry> entries;
-  // what the Jacobi steps of the mean-stress systems read of a link, in a
-  // table of its own at the same places (their loop, the most repeated of
-  // the estimate, streams 8 bytes per link instead of the entry).  A link
-  // that is not linked has weights 0, and adding 0 x s (s finite) to a sum
-  // that starts at +0 leaves it as it is, bit for bit: the steps take every
-  // end and need no test
+  // link to a ghost); the other end reads it swapped.  A link that is not
+  // linked has weights 0, and adding 0 x s (s finite) to a sum that starts
+  // at +0 leaves it as it is, bit for bit: the steps take every end and
+  // need no test.  The rest of a link's tangent is made again from its row
+  // where a pass needs it, once for both ends (for_each_acting): that is
+  // faster than reading a table of it at each end, and 64 bytes a link less
   struct JacobiEntry {
     float fwd, tr;    // weights of the partner's mean stress in the two systems
-    bool acts() const { return true; }
   };
   std::vector<JacobiEntry> jacobi;
 
@@ -134,24 +127,25 @@ class MCAStableTimestep : protected Pointers {
   void release();
   Result lanczos_estimate(const Input &, Comm *);
   void prepare(const Input &, Comm *);
-  void cache_links(const Input &);
-  // f(j, entry, swapped) for each link of local automaton i whose entry in
-  // table (entries or jacobi) acts (a JacobiEntry always does), in the
-  // order of its rows: the partner, the entry and whether i reads it
-  // swapped (the partner made it)
-  template <class Entry, class F>
-  void for_each_end(const MCAHostLinks &, int i, const std::vector<Entry> &table, F f) const;
-  static MCAKernels::MCALinkTangent tangent(const LinkEntry &, bool swapped);
-  // the partner's mean-stress weights (forward, transposed) seen from an end
-  static void jacobi_weights(const JacobiEntry &, bool swapped, double &fwd, double &tr);
-  // the share of an end's link in sums over the local automata: 1 for the
-  // lower ID of a local pair, 0 for the other, 1/2 for a link to a ghost
-  // (counted half by each of the two processors that own its automata)
-  static double end_weight(int nlocal, int j, bool swapped);
+  void cache_jacobi_weights(const Input &);
+  // f(i, j, tangent) for each link that acts (a link, or a broken pair
+  // that pushes) once, from the local automaton i that evaluates it (in
+  // the order of the local automata and their rows): its partner and its
+  // tangent seen from i, made from its row (f may swap its sides)
+  template <class F> void for_each_acting(const Input &, F f) const;
+  // the partner's mean-stress weights (forward, transposed) of the link of
+  // local automaton i at row m
+  void jacobi_weights(const MCAHostLinks &, int i, int m, double &fwd, double &tr) const;
+  // the share of a link that a local automaton evaluates, with partner j,
+  // in sums over the local automata: 1 for a local partner, 1/2 for a
+  // ghost (counted half by each of the two processors that own its
+  // automata)
+  static double link_weight(int nlocal, int j);
   // the unit start vector of the Lanczos steps (it depends only on the IDs)
   void start_vector(const Input &, std::vector<double> &v) const;
-  // y = M^-1/2 K_s M^-1/2 x on the local automata (6 per automaton)
-  void apply(const Input &, Comm *, const double *x, double *y);
+  // y <- M^-1/2 K_s M^-1/2 x - keep y on the local automata (6 per
+  // automaton; keep y: the Lanczos step's beta v_old, in y already)
+  void apply(const Input &, Comm *, const double *x, double keep, double *y);
   // the motion of the local automata for a mass-scaled vector, sent to the ghosts
   void set_motion(const Input &, Comm *, const double *x);
   double dot(const std::vector<double> &a, const std::vector<double> &b) const;

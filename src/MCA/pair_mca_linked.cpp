@@ -241,10 +241,9 @@ void PairMCALinked::build_partner_cache()
   if (!links->share_rows(nlocal, atom->tag, partner_cache, apart))
     error->one(FLERR,
                "{}: the link of automaton {} to automaton {} is lost: {} sees another periodic "
-               "image of {} (the link is longer than the communication cutoff {}, or half a "
+               "image of {} (the link is longer than the communication cutoff {:.6g}, or half a "
                "periodic box length){}",
-               label, apart[0], apart[1], apart[1], apart[0], cut_global + neighbor->skin,
-               timestep_hint());
+               label, apart[0], apart[1], apart[1], apart[0], comm_cutoff(), timestep_hint());
 }
 
 void PairMCALinked::allocate_partner_cache()
@@ -262,12 +261,18 @@ int PairMCALinked::partner_index(int i, tagint partner_tag)
 {
   const int j = atom->map(partner_tag);
   if (j < 0)
-    error->one(FLERR,
-               "{}: the link of automaton {} to automaton {} is lost: the partner is "
-               "farther than the communication cutoff {} (stretched link, or a deleted automaton); "
-               "increase it with comm_modify cutoff or pair_style mca cutoff{}",
-               label, atom->tag[i], partner_tag, cut_global + neighbor->skin, timestep_hint());
+    error->one(
+        FLERR,
+        "{}: the link of automaton {} to automaton {} is lost: the partner is "
+        "farther than the communication cutoff {:.6g} (stretched link, or a deleted automaton); "
+        "increase it with comm_modify cutoff or pair_style mca cutoff{}",
+        label, atom->tag[i], partner_tag, comm_cutoff(), timestep_hint());
   return domain->closest_image(i, j);
+}
+
+double PairMCALinked::comm_cutoff() const
+{
+  return MAX(comm->cutghostuser, neighbor->cutneighmax);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -282,6 +287,7 @@ MCAHostLinks PairMCALinked::host_links() const
   d.partner_ = partner_cache;
   d.slot_ = links->slot;
   d.rows_ = links->rows;
+  d.row_stride_ = links->stored_size;
   d.nrows = links->nrows;
   d.atom_state_ = links->atom_state;
   return d;

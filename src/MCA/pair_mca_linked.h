@@ -32,7 +32,8 @@ struct MCAHostLinks {
   const int *nlinks_;
   int **partner_;    // local or ghost index of each link's partner
   int **slot_;       // the row of each link in the pool (both ends of a local link: one row)
-  double **rows_;
+  double *rows_;     // the pool, row_stride_ doubles a row
+  int row_stride_;
   int nrows;    // rows of the pool in use
   double **atom_state_;
 
@@ -40,7 +41,10 @@ struct MCAHostLinks {
   int nlinks(int i) const { return nlinks_[i]; }
   int partner(int i, int m) const { return partner_[i][m]; }
   int slot(int i, int m) const { return slot_[i][m]; }
-  double *history_row(int i, int m) const { return rows_[slot_[i][m]]; }
+  double *history_row(int i, int m) const
+  {
+    return rows_ + static_cast<std::size_t>(slot_[i][m]) * row_stride_;
+  }
   double &atom_state(int i, int k) const { return atom_state_[i][k]; }
 };
 
@@ -89,6 +93,9 @@ class PairMCALinked : public Pair {
   // their number at reneighboring (the partner cache, the pair styles' sums)
   static int local_rows(int nlocal) { return nlocal + nlocal / 64 + 16; }
   int partner_index(int i, tagint partner_tag);
+  // how far the ghost atoms reach: the neighbour lists' cutoff, or the
+  // comm_modify cutoff where it is larger (what the lost-link errors name)
+  double comm_cutoff() const;
   MCAHostLinks host_links() const;
   void stretched_warning();
   // what a blow-up message adds about the time step (pair mca: how it

@@ -384,12 +384,16 @@ def test_stretched_link_is_reported(build, tmp_path):
 
 @pytest.mark.mpi
 def test_lost_link_stops_the_run(build, tmp_path):
-    """A link whose partner is not even a ghost atom stops the run with a clear error."""
-    result = build.run(STRETCH, tmp_path, nprocs=2, check=False, timeout=120)
+    """A link whose partner is not even a ghost atom stops the run with a
+    clear error that names the communication cutoff in force: here the one
+    of comm_modify (2.5 m, larger than the neighbour lists' 0.646 m, which
+    it named before, smaller than the 7 m the link is stretched to)."""
+    stretch = STRETCH.replace("set atom 1", "comm_modify cutoff 2.5\nset atom 1", 1)
+    result = build.run(stretch, tmp_path, nprocs=2, check=False, timeout=120)
     assert result.returncode != 0
     assert re.search(r"ERROR on proc \d: Pair mca: the link of automaton \d to automaton \d is "
-                     r"lost: the partner is farther than the communication cutoff",
-                     result.stdout + result.stderr)
+                     r"lost: the partner is farther than the communication cutoff 2\.5 ",
+                     result.stdout + result.stderr), (result.stdout + result.stderr)[-2000:]
 
 
 def test_restart_with_another_history_layout_is_refused(build, tmp_path):

@@ -73,3 +73,21 @@ def test_read_output(tmp_path):
     (tmp_path / "a.dat").write_text("1 2 3\n")
     assert bitwise.read_output(str(tmp_path / "a.png")) == b"\x89PNG\x00\xff"
     assert bitwise.read_output(str(tmp_path / "a.dat")) == "1 2 3\n"
+
+
+def test_estimate_tolerance():
+    """The estimate is an output of its own: a change of it within
+    --estimate-rtol is listed but is no difference; one beyond it, or any
+    change elsewhere, is."""
+    base = {"thermo": "Step Temp\n0 1.5", "estimate": "dt omega zeta\n1e-05 2000 0"}
+    moved = dict(base, estimate="dt omega zeta\n1.0000001e-05 2000 0")    # 1e-7 relative
+    same, rel, details = bitwise.compare(base, moved, estimate_rtol=1e-6)
+    assert same is True and rel == 0.0
+    assert len(details) == 1 and "within --estimate-rtol" in details[0], details
+    same, rel, details = bitwise.compare(base, moved, estimate_rtol=1e-8)
+    assert same is False and 0.9e-7 < rel < 1.1e-7, (rel, details)
+    same, rel, details = bitwise.compare(base, moved)
+    assert same is False
+    other = dict(moved, thermo="Step Temp\n0 1.5000001")
+    same, rel, details = bitwise.compare(base, other, estimate_rtol=1e-6)
+    assert same is False and any(d.startswith("thermo:") for d in details), details
