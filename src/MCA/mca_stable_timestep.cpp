@@ -333,11 +333,13 @@ double MCAStableTimestep::dot(const std::vector<double> &a, const std::vector<do
 
 void MCAStableTimestep::set_motion(const Input &in, Comm *comm, const double *x)
 {
-  for (int i = 0; i < in.links.nlocal; i++)
+  for (int i = 0; i < in.links.nlocal; i++) {
+    const double sm = sqrt(in.rmass[i]), sj = sqrt(in.inertia[i]);
     for (int k = 0; k < 3; k++) {
-      motion_of(i)[k] = x[6 * i + k] / sqrt(in.rmass[i]);
-      motion_of(i)[3 + k] = x[6 * i + 3 + k] / sqrt(in.inertia[i]);
+      motion_of(i)[k] = x[6 * i + k] / sm;
+      motion_of(i)[3 + k] = x[6 * i + 3 + k] / sj;
     }
+  }
   stage = STAGE_MOTION;
   comm->estimate_forward_comm();
 }
