@@ -334,7 +334,7 @@ template <class DeviceType> struct MCAPredictorFinish {
   {
     double sums[PS_SIZE];
     load_sums(d.predictor_sums, copies, d.foreign, i, PS_SIZE, sums);
-    predictor_finish_of(d, i, sums + PS_FABRIC, sums + PS_STRAIN, setup_pass);
+    predictor_finish_of(d, i, sums, setup_pass);
   }
 };
 

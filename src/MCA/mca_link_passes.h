@@ -152,12 +152,11 @@ namespace MCAKernels {
   }
 
   // the mean stress automaton i's normal law applies this step, from its
-  // predictor sums (PS_FABRIC and PS_STRAIN columns); its fabric tensor is
-  // kept for the stress
+  // predictor sums; its fabric tensor is kept for the stress
   template <class D>
-  MCA_FUNCTION void predictor_finish_of(const D &d, int i, const double *fab, const double *mstrain,
-                                        bool setup_pass)
+  MCA_FUNCTION void predictor_finish_of(const D &d, int i, const double *sums, bool setup_pass)
   {
+    const double *fab = sums + PS_FABRIC, *mstrain = sums + PS_STRAIN;
     for (int k = 0; k < 6; k++) d.fabric(i, k) = fab[k];
     const bool interacting = d.link_count(i) > 0 && d.packing(i) != PACKING_NONE;
     double smean_pred, dsmean;

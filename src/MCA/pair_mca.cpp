@@ -80,7 +80,7 @@ PairMCA::HostData PairMCA::host_data()
   d.dsmean_ = dsmean;
   d.smean_pred_ = smean_pred;
   d.link_count_ = link_count;
-  d.fabric_ = sums;
+  d.fabric_ = predictor_sums;    // its PS_FABRIC columns
   d.stress_ = avec->stress;
   d.smean_ = avec->smean;
   d.seq_ = avec->seq;
@@ -102,9 +102,9 @@ PairMCA::HostData PairMCA::host_data()
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairMCALinked(lmp, "Pair mca"), materials(lmp), link_allowed(nullptr), link_tolerance(nullptr),
     link_count(nullptr), pred_stiffness(nullptr), dsmean(nullptr), smean_pred(nullptr),
-    return_scale(nullptr), return_smean(nullptr), nsums(0), sums(nullptr), avec(nullptr),
-    contact_list(nullptr), restart_contacts(0), restart_healing(0), stability(nullptr),
-    dt_monitor(), dt_estimated(0), dt_warned_ratio(0.0), links_changed(0)
+    return_scale(nullptr), return_smean(nullptr), nsums(0), predictor_sums(nullptr), bmat(nullptr),
+    avec(nullptr), contact_list(nullptr), restart_contacts(0), restart_healing(0),
+    stability(nullptr), dt_monitor(), dt_estimated(0), dt_warned_ratio(0.0), links_changed(0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -142,7 +142,8 @@ PairMCA::~PairMCA()
     memory->destroy(link_tolerance);
   }
   destroy_peratom();
-  memory->destroy(sums);
+  memory->destroy(predictor_sums);
+  memory->destroy(bmat);
   delete stability;
 }
 
@@ -987,8 +988,10 @@ void PairMCA::grow_sums()
 {
   if (atom->nlocal <= nsums) return;
   nsums = local_rows(atom->nlocal);
-  memory->destroy(sums);
-  memory->create(sums, nsums, SUMS_SIZE, "pair:sums");
+  memory->destroy(predictor_sums);
+  memory->destroy(bmat);
+  memory->create(predictor_sums, nsums, PS_SIZE, "pair:predictor_sums");
+  memory->create(bmat, nsums, 9, "pair:bmat");
 }
 
 /* ----------------------------------------------------------------------
@@ -1015,13 +1018,13 @@ void PairMCA::count_links()
 void PairMCA::predict_mean_stress()
 {
   const HostData d = host_data();
-  const HostSums predictor{sums};
+  const HostSums sums{predictor_sums};
   const bool setup_pass = (update->setupflag != 0);
   for (int i = 0; i < d.nlocal; i++)
-    for (int k = 0; k < 6; k++) sums[i][SUMS_FABRIC + k] = sums[i][SUMS_MOMENT + k] = 0.0;
-  for (int i = 0; i < d.nlocal; i++) predictor_links_of(d, predictor, i);
-  for (int i = 0; i < d.nlocal; i++)
-    predictor_finish_of(d, i, sums[i] + SUMS_FABRIC, sums[i] + SUMS_MOMENT, setup_pass);
+    for (int k = 0; k < PS_SIZE; k++) predictor_sums[i][k] = 0.0;
+  for (int i = 0; i < d.nlocal; i++) predictor_links_of(d, sums, i);
+  // (the fabric tensor stays in the first columns of the sums)
+  for (int i = 0; i < d.nlocal; i++) predictor_finish_of(d, i, predictor_sums[i], setup_pass);
   comm_stage = STAGE_MEAN;
   MCACompat::forward_comm(comm, this);
 }
@@ -1054,41 +1057,39 @@ void PairMCA::compute(int eflag, int vflag)
   const MCALinkPassFlags p = link_pass_flags(update->setupflag == 0);
 
   const HostData d = host_data();
-  const HostLinkSums link_sums{atom->f, atom->torque, sums};
+  const HostLinkSums sums{atom->f, atom->torque, bmat};
   const HostTally tally{this, evflag != 0};
   MCAHostTotals totals;
   for (int i = 0; i < d.nlocal; i++)
-    for (int k = 0; k < 9; k++) sums[i][SUMS_MOMENT + k] = 0.0;
+    for (int k = 0; k < 9; k++) bmat[i][k] = 0.0;
   if (plastic() && p.commit) {
     // the elastic trial of the links, the return of each automaton from
     // its trial stress (sent to the ghosts), then the corrected links.  A
     // setup returns no automaton: its forces are those of the last step
     // plus the elastic response to what moved since
-    for (int i = 0; i < d.nlocal; i++) trial_pass_of(d, link_sums, p, i);
+    for (int i = 0; i < d.nlocal; i++) trial_pass_of(d, sums, p, i);
     for (int i = 0; i < d.nlocal; i++) {
-      plastic_return_of(d, i, sums[i] + SUMS_MOMENT, p.commit);
-      for (int k = 0; k < 9; k++) sums[i][SUMS_MOMENT + k] = 0.0;
+      plastic_return_of(d, i, bmat[i], p.commit);
+      for (int k = 0; k < 9; k++) bmat[i][k] = 0.0;
     }
     comm_stage = STAGE_RETURN;
     MCACompat::forward_comm(comm, this);
   }
   if (!plastic()) {
-    for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_ELASTIC>(d, link_sums, tally, p, i, totals);
+    for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_ELASTIC>(d, sums, tally, p, i, totals);
   } else if (p.commit) {
-    for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_PLASTIC>(d, link_sums, tally, p, i, totals);
+    for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_PLASTIC>(d, sums, tally, p, i, totals);
   } else {
     for (int i = 0; i < d.nlocal; i++)
-      link_pass_of<LAW_PLASTIC_SETUP>(d, link_sums, tally, p, i, totals);
+      link_pass_of<LAW_PLASTIC_SETUP>(d, sums, tally, p, i, totals);
   }
   // broken pairs: their compressive force (and friction) only
   if (fractured())
-    for (int i = 0; i < d.nlocal; i++)
-      pushing_pass_of<LINK_BROKEN>(d, link_sums, tally, p, i, totals);
+    for (int i = 0; i < d.nlocal; i++) pushing_pass_of<LINK_BROKEN>(d, sums, tally, p, i, totals);
   if (contacts())
-    for (int i = 0; i < d.nlocal; i++)
-      pushing_pass_of<LINK_CONTACT>(d, link_sums, tally, p, i, totals);
+    for (int i = 0; i < d.nlocal; i++) pushing_pass_of<LINK_CONTACT>(d, sums, tally, p, i, totals);
 
-  for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, sums[i] + SUMS_MOMENT, p.commit);
+  for (int i = 0; i < d.nlocal; i++) automaton_outputs_of(d, i, bmat[i], p.commit);
 
   // fracture: the links that meet their criterion with the stress of this
   // step break (from the next step on they are broken pairs); the damage
@@ -1614,5 +1615,5 @@ double PairMCA::memory_usage()
   // pred_stiffness, dsmean, smean_pred and link_count; with plasticity
   // the return's M and mean stress; the sums; the partner cache
   return ((3.0 + (plastic() ? 2.0 : 0.0)) * sizeof(double) + sizeof(int)) * nmax +
-      (double) SUMS_SIZE * nsums * sizeof(double) + (double) cache_rows * cache_cols * sizeof(int);
+      (PS_SIZE + 9.0) * nsums * sizeof(double) + (double) cache_rows * cache_cols * sizeof(int);
 }

@@ -92,15 +92,16 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   double *return_smean;      // and the mean stress of its trial (communicated)
   void destroy_peratom();
   // the sums of the passes, for the local automata only (a pass adds to a
-  // local partner, never to a ghost; nsums rows of 15).  The predictor's
-  // strain moment M is dead once the mean stress is predicted, so the link
-  // pass's traction moment B takes its place at the row's start; the
-  // fabric tensor F, kept for the stress, follows.  (Rows of 12 and 9 in
-  // two arrays took 6 doubles more; F apart from M and B cost the
-  // predictor 15 %: each end of a link adds to two rows)
-  static constexpr int SUMS_MOMENT = 0, SUMS_FABRIC = 9, SUMS_SIZE = 15;
+  // local partner, never to a ghost; nsums rows).  Two arrays: B's dense
+  // rows of 9 keep the link pass on fewer cache lines than rows shared
+  // with the predictor's sums, whose strain moments are dead by then (one
+  // array of 15 columns cost 3-4 % of the step at 265721 automata, 2-5 %
+  // measured again on 7 Dec 2026; F in rows of its own and M then B in
+  // rows of 9 cost the predictor 15 %: bench/README.md)
   int nsums;
-  double **sums;    // M (PS_STRAIN columns) then B (LS_BMAT) at SUMS_MOMENT; F at SUMS_FABRIC
+  double **predictor_sums;    // predictor pass: PS_* columns (mca_link_passes.h); the
+                              // first six, sum n n^T, are the fabric tensor of the stress
+  double **bmat;              // link pass: sum of T n^T (LS_BMAT columns)
   void grow_sums();
   // what the forward communication sends: the predictor stiffness, the
   // mean-stress increment and prediction, or the return of the automata

@@ -29,7 +29,7 @@ struct PairMCA::HostData : MCAHostLinks {
   const MCAKernels::MCAMaterial *material_;
   double *pred_stiffness_, *dsmean_, *smean_pred_;
   int *link_count_;
-  double **fabric_, **stress_;    // fabric_: the rows of sums (F at SUMS_FABRIC)
+  double **fabric_, **stress_;
   double *smean_, *seq_, *eeq_;
   // plasticity
   const MCAKernels::MCAHardening *hardening_;
@@ -53,7 +53,7 @@ struct PairMCA::HostData : MCAHostLinks {
   double &dsmean(int i) const { return dsmean_[i]; }
   double &smean_pred(int i) const { return smean_pred_[i]; }
   int &link_count(int i) const { return link_count_[i]; }
-  double &fabric(int i, int k) const { return fabric_[i][SUMS_FABRIC + k]; }
+  double &fabric(int i, int k) const { return fabric_[i][k]; }
   double &stress(int i, int k) const { return stress_[i][k]; }
   double &smean(int i) const { return smean_[i]; }
   double &seq(int i) const { return seq_[i]; }
@@ -74,31 +74,22 @@ struct PairMCA::HostData : MCAHostLinks {
   double &damage(int i) const { return damage_[i]; }
 };
 
-// the predictor's sums (PS_* columns) in the pair style's rows of sums,
-// added in the loop order: M at SUMS_MOMENT (where B goes later), F at
-// SUMS_FABRIC, one row per automaton (the adds of a link to F and M pair
-// into packed adds only in one row: pair_mca.h)
+// per-automaton sums in plain arrays (predictor: PS_* columns), added in
+// the loop order
 struct PairMCA::HostSums {
   double **sums;
   typedef int Thread;
   Thread begin(int) const { return 0; }
-  double &at(int i, int k) const
-  {
-    using namespace MCAKernels;
-    if (k < PS_STRAIN) return sums[i][SUMS_FABRIC + k - PS_FABRIC];
-    return sums[i][SUMS_MOMENT + k - PS_STRAIN];
-  }
-  void own(Thread &, int i, int k, double value) const { at(i, k) += value; }
+  void own(Thread &, int i, int k, double value) const { sums[i][k] += value; }
   int partner_of(Thread &, int j) const { return j; }
-  void partner(Thread &, int j, int k, double value) const { at(j, k) += value; }
+  void partner(Thread &, int j, int k, double value) const { sums[j][k] += value; }
 };
 
 // the link pass's force and torque straight into LAMMPS's f and torque,
-// its B (LS_BMAT columns) into the rows of sums at SUMS_MOMENT: no second
-// pass over the forces.  The passes add with constant columns, so the
-// choice folds away
+// its B (LS_BMAT columns) into an array of 9: no second pass over the
+// forces.  The passes add with constant columns, so the choice folds away
 struct PairMCA::HostLinkSums {
-  double **f, **torque, **sums;
+  double **f, **torque, **bmat;
   typedef int Thread;
   Thread begin(int) const { return 0; }
   double &at(int i, int k) const
@@ -106,7 +97,7 @@ struct PairMCA::HostLinkSums {
     using namespace MCAKernels;
     if (k < LS_TORQUE) return f[i][k - LS_FORCE];
     if (k < LS_BMAT) return torque[i][k - LS_TORQUE];
-    return sums[i][SUMS_MOMENT + k - LS_BMAT];
+    return bmat[i][k - LS_BMAT];
   }
   void own(Thread &, int i, int k, double value) const { at(i, k) += value; }
   int partner_of(Thread &, int j) const { return j; }
