@@ -45,6 +45,7 @@ FixMCALinksKokkos::FixMCALinksKokkos(LAMMPS *lmp, int narg, char **arg) :
   memory->destroy(partner);
   memory->destroy(slot);
   memory->destroy(atom_state);
+  nmax_atoms = 0;
   const int capacity = maxlinks;
   maxlinks = 0;
   set_capacity(capacity);
@@ -89,14 +90,13 @@ void FixMCALinksKokkos::grow_pool(int n)
 
 /* ---------------------------------------------------------------------- */
 
-void FixMCALinksKokkos::grow_arrays(int nmax)
+// (on the host, within the base class's reserve_atoms)
+void FixMCALinksKokkos::resize_atom_tables(int nmax)
 {
-  to_host();
   memoryKK->grow_kokkos(k_nlinks, nlinks, nmax, "mca/links:nlinks");
   memoryKK->grow_kokkos(k_partner, partner, nmax, maxlinks, "mca/links:partner");
   memoryKK->grow_kokkos(k_slot, slot, nmax, maxlinks, "mca/links:slot");
   memoryKK->grow_kokkos(k_atom_state, atom_state, nmax, atom_size, "mca/links:atom_state");
-  host_changed();
 }
 
 /* ---------------------------------------------------------------------- */

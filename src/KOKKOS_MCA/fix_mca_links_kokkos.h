@@ -41,7 +41,6 @@ class FixMCALinksKokkos : public FixMCALinks {
   FixMCALinksKokkos(class LAMMPS *, int, char **);
   ~FixMCALinksKokkos() override;
 
-  void grow_arrays(int) override;
   void to_host() override;
   void host_changed() override;
   void to_device();
@@ -55,6 +54,7 @@ class FixMCALinksKokkos : public FixMCALinks {
 
  protected:
   void allocate_links(int nmax) override;
+  void resize_atom_tables(int nmax) override;
   void grow_pool(int n) override;
 };
 

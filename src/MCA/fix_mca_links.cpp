@@ -46,8 +46,8 @@ static constexpr int LAYOUT1 = 1, LAYOUT1_SIZE = 27, LAYOUT1_PLASTICITY_SIZE = 2
 ------------------------------------------------------------------------- */
 
 FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), nlinks(nullptr), partner(nullptr), slot(nullptr), rows(nullptr), nrows(0),
-    maxrows(0), atom_state(nullptr), list(nullptr)
+    Fix(lmp, narg, arg), nmax_atoms(0), nlinks(nullptr), partner(nullptr), slot(nullptr),
+    rows(nullptr), nrows(0), maxrows(0), atom_state(nullptr), list(nullptr)
 {
   int nblock_args = narg - 3;
   if (narg >= 5 && strcmp(arg[narg - 2], "precision") == 0) {
@@ -75,6 +75,7 @@ FixMCALinks::FixMCALinks(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   restart_peratom = 1;
   stores_ids = 1;
+  create_attribute = 1;    // atoms made by create_atoms, read_data, ... start without links
   created = 0;
   maxlinks = 0;
   set_capacity(1);
@@ -172,13 +173,10 @@ void FixMCALinks::set_capacity(int capacity)
     }
   }
   maxlinks = capacity;
-  allocate_links(atom->nmax);
   if (!nlinks) {
-    grow_arrays(atom->nmax);
-    for (int i = 0; i < atom->nmax; i++) {
-      nlinks[i] = 0;
-      for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
-    }
+    reserve_atoms(atom->nlocal + 1);
+  } else {
+    allocate_links(nmax_atoms);
   }
   size_t p = 0;
   for (int i = 0; i < nlocal && !kept_partner.empty(); i++) {
@@ -202,6 +200,38 @@ void FixMCALinks::remove_row(int i, int m)
     slot[i][m] = slot[i][last];
   }
   nlinks[i] = last;
+}
+
+/* ----------------------------------------------------------------------
+   the per-atom tables hold the local atoms and one more (Atom::sort and
+   first_reorder swap atoms through index nlocal), not the ghost atoms,
+   whose links nothing reads: they grow with the local atoms (a move from
+   another processor, a new atom, a restart file), not with atom->nmax,
+   which counts the ghosts and LAMMPS's margin of 16384 atoms (at 32000
+   automata on one processor, nmax is 49152)
+------------------------------------------------------------------------- */
+
+void FixMCALinks::reserve_atoms(int n)
+{
+  if (n <= nmax_atoms) return;
+  to_host();
+  const int old = nmax_atoms;
+  // (a margin, so that atoms arriving one by one seldom reallocate)
+  nmax_atoms = n + n / 32 + 64;
+  resize_atom_tables(nmax_atoms);
+  for (int i = old; i < nmax_atoms; i++) {
+    nlinks[i] = 0;
+    for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
+  }
+  host_changed();
+}
+
+void FixMCALinks::resize_atom_tables(int nmax)
+{
+  memory->grow(nlinks, nmax, "mca/links:nlinks");
+  memory->grow(partner, nmax, maxlinks, "mca/links:partner");
+  memory->grow(slot, nmax, maxlinks, "mca/links:slot");
+  memory->grow(atom_state, nmax, atom_size, "mca/links:atom_state");
 }
 
 /* ----------------------------------------------------------------------
@@ -356,7 +386,7 @@ bool FixMCALinks::share_rows(int nlocal, const tagint *tag, int *const *partner_
 
 double FixMCALinks::memory_usage()
 {
-  const double nmax = atom->nmax;
+  const double nmax = nmax_atoms;
   return nmax *
       (sizeof(int) + maxlinks * (sizeof(tagint) + sizeof(int)) + atom_size * sizeof(double)) +
       (double) maxrows * stored_size * sizeof(double);
@@ -364,12 +394,23 @@ double FixMCALinks::memory_usage()
 
 /* ---------------------------------------------------------------------- */
 
-void FixMCALinks::grow_arrays(int nmax)
+// (atom->nmax grew: the tables follow the local atoms only, reserve_atoms)
+void FixMCALinks::grow_arrays(int /*nmax*/)
 {
-  memory->grow(nlinks, nmax, "mca/links:nlinks");
-  memory->grow(partner, nmax, maxlinks, "mca/links:partner");
-  memory->grow(slot, nmax, maxlinks, "mca/links:slot");
-  memory->grow(atom_state, nmax, atom_size, "mca/links:atom_state");
+  reserve_atoms(atom->nlocal + 1);
+}
+
+/* ----------------------------------------------------------------------
+   a new atom (create_atoms, read_data, fix deposit, ...): no links
+------------------------------------------------------------------------- */
+
+void FixMCALinks::set_arrays(int i)
+{
+  reserve_atoms(i + 1);
+  to_host();
+  nlinks[i] = 0;
+  for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
+  host_changed();
 }
 
 /* ----------------------------------------------------------------------
@@ -378,6 +419,7 @@ void FixMCALinks::grow_arrays(int nmax)
 
 void FixMCALinks::copy_arrays(int i, int j, int /*delflag*/)
 {
+  reserve_atoms(j + 1);
   to_host();
   nlinks[j] = nlinks[i];
   for (int m = 0; m < nlinks[i]; m++) {
@@ -438,6 +480,7 @@ int FixMCALinks::unpack_record(int nlocal, const double *buf, RecordRows from)
   int width = row_size;
   if (from == RECORD_STORED) width = stored_size;
   if (from == RECORD_LAYOUT1) width = layout1_file.layout().row_size;
+  reserve_atoms(nlocal + 1);
   int m = 0;
   nlinks[nlocal] = static_cast<int>(buf[m++]);
   for (int k = 0; k < atom_size; k++) atom_state[nlocal][k] = buf[m++];

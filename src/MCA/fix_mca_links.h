@@ -61,6 +61,7 @@ class FixMCALinks : public Fix {
   double memory_usage() override;
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
   int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
   void write_restart(FILE *) override;
@@ -70,8 +71,10 @@ class FixMCALinks : public Fix {
   int size_restart(int) override;
   int maxsize_restart() override;
 
-  // link table, up to maxlinks links per atom
+  // link table, up to maxlinks links per atom, for the local atoms only
+  // (nothing reads the links of a ghost atom)
   int maxlinks;           // capacity per automaton
+  int nmax_atoms;         // atoms the per-atom tables hold
   int *nlinks;            // number of links of each atom
   tagint **partner;       // atom ID of the partner of each link
   int **slot;             // the row of each link in the pool
@@ -113,6 +116,9 @@ class FixMCALinks : public Fix {
   bool share_rows(int nlocal, const tagint *tag, int *const *partner_index, tagint *apart);
 
   void set_capacity(int);
+  // room in the per-atom tables for atoms 0..n-1 (new entries: no links,
+  // a law state of zeros)
+  void reserve_atoms(int n);
   // drop link m of local atom i: the last link takes its place (host)
   void remove_row(int i, int m);
   class NeighList *build_full_list();
@@ -124,6 +130,7 @@ class FixMCALinks : public Fix {
 
  protected:
   virtual void allocate_links(int nmax);
+  virtual void resize_atom_tables(int nmax);
   virtual void grow_pool(int n);
 
  private:

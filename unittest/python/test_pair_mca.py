@@ -10,7 +10,7 @@ import sys
 import numpy as np
 import pytest
 
-from mcatest import ROOT, read_dump, read_thermo, relative_difference
+from mcatest import ROOT, kokkos_args, kokkos_build, read_dump, read_thermo, relative_difference
 
 sys.path.insert(0, str(ROOT / "examples" / "waves"))
 from dispersion_model import p_wave_speed_ratio  # noqa: E402
@@ -566,3 +566,101 @@ def test_links_migrate_with_load_balancing_and_restart_files(build, tmp_path):
     continued = {name: last[name][rows] for name in plain}
     assert_same_flight(plain, continued)
     assert "balance" in log
+
+
+# ---------------------------------------------------------------------------
+# automata created after the links were made
+
+# the cluster of MIGRATE at rest (vibrating only), sorted every 50 steps;
+# LATER: what comes after its links are made
+LATER_ATOMS = MIGRATE[:MIGRATE.index("compute         s all")].replace(
+    "atom_modify     map array\n", "atom_modify     map array sort 50 0.0\n").replace(
+    "vx atom 100.0+0.05*sin(3*y)", "vx atom 0.05*sin(3*y)") + """
+thermo_style    custom step pe
+thermo_modify   format float %.17g
+run             200
+LATER
+compute         s all mca/atom links sxx smean
+dump            d all custom 200 states.dump id x y z vx vy vz omegax omegay omegaz fx fy fz &
+                c_s[1] c_s[2] c_s[3]
+dump_modify     d sort id format float %.17g
+run             400
+"""
+assert "sort 50" in LATER_ATOMS and "100.0" not in LATER_ATOMS
+# a second body as large as the first, 0.72 m away (the link length is 0.51 m)
+LATER_BODY = "region extra block 0.99 4.01 -0.01 3.01 -0.01 3.01\ncreate_atoms 1 region extra\n"
+BODY_ATOMS = 172    # fcc points of a 3 x 3 x 3 cell block, faces included
+
+
+def later_atoms_runs(build, directory, nprocs, extra_args=()):
+    """The vibrating body with and without a second body created after its
+    links were made; the last snapshot of each, by atom ID."""
+    finals = {}
+    for name, later in (("alone", ""), ("later", LATER_BODY)):
+        build.run(LATER_ATOMS.replace("LATER\n", later), directory / name, nprocs=nprocs,
+                  extra_args=extra_args)
+        last = read_dump(directory / name / "states.dump")[-1]
+        assert last["timestep"] == 600
+        finals[name] = last
+    return finals["alone"], finals["later"]
+
+
+def assert_later_atoms_change_nothing(alone, later):
+    """The automata created after the links were made have no links and no
+    force, so they stay where they were made; the first body moves as it
+    does alone, up to round-off: measured, bit for bit on 1 and 2 ranks and
+    on one kk thread (the new automata come after the body's in the atom
+    order), and on 2 kk threads, whose chunks of automata move with the atom
+    count, 2e-14 m in positions and 5e-9 of the vibration (a strain of
+    5e-6: the round-off of a position over a link length, times E, is 4e-9
+    of its stress).  Tolerances 1e-10 of the box length and 1e-6 of the
+    vibration (velocities, spins, forces, stresses), as in
+    test_links_migrate_between_ranks: a link given to a new automaton, or a
+    body's link lost when the tables grew, changes them by O(1)."""
+    assert len(alone["id"]) == BODY_ATOMS and len(later["id"]) == 2 * BODY_ATOMS
+    ids = alone["id"]
+    first = np.isin(later["id"], ids)
+    assert np.array_equal(later["id"][first], ids)
+    new = ~first
+    assert np.all(later["c_s[1]"][new] == 0)
+    for name in ("vx", "vy", "vz", "omegax", "omegay", "omegaz", "fx", "fy", "fz", "c_s[2]"):
+        assert np.all(later[name][new] == 0), name
+    # (create_atoms put them on the lattice: x = 0.3592 k)
+    step = 0.7184 / 2
+    for name in ("x", "y", "z"):
+        k = later[name][new] / step
+        assert np.max(np.abs(k - np.round(k))) < 1e-12, name
+    assert np.array_equal(later["c_s[1]"][first], alone["c_s[1]"])
+    assert np.min(alone["c_s[1]"]) >= 3    # every automaton of the body is linked
+    for name in alone:
+        if name in ("timestep", "box", "id", "c_s[1]"):
+            continue
+        diff = np.max(np.abs(later[name][first] - alone[name]))
+        if name in ("x", "y", "z"):
+            assert diff < 1.0e-10 * 8.6208, name
+        else:
+            scale = np.max(np.abs(alone[name]))
+            assert scale > 0 and diff < 1.0e-6 * scale, (name, diff / scale)
+        print(f"{name}: largest difference {diff:.2e}"
+              + ("" if name in ("x", "y", "z") else f", relative {diff / scale:.1e}"))
+
+
+@pytest.mark.mpi
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_automata_created_after_the_links_start_without_links(build, tmp_path, nprocs):
+    """create_atoms after a run: a second body of 172 automata next to a
+    linked, vibrating one.  The links fix holds its tables for the local
+    automata only (not the ghosts), with a margin of 1/32 and 64 atoms:
+    172 new automata make them grow (set_arrays).  The new automata start
+    without links and the first body does not notice them."""
+    alone, later = later_atoms_runs(build, tmp_path, nprocs)
+    assert_later_atoms_change_nothing(alone, later)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_automata_created_after_the_links_start_without_links_kokkos(tmp_path, threads):
+    """The same with pair mca/kk on 1 and 2 host threads (the links fix's
+    tables in DualViews, grown on the host and sent to the device)."""
+    build = kokkos_build()
+    alone, later = later_atoms_runs(build, tmp_path, 1, extra_args=kokkos_args(threads))
+    assert_later_atoms_change_nothing(alone, later)
