@@ -228,6 +228,10 @@ void PairMCALinked::build_partner_cache()
 {
   // (rows for the local automata only)
   const int nlocal = atom->nlocal;
+  // the links fix's tables grow where LAMMPS gives an atom an index (its
+  // hooks); one that came by another path gets an entry without links,
+  // not a read past the tables' end
+  links->reserve_atoms(nlocal + 1);
   if (cache_rows < nlocal || cache_cols < links->maxlinks) {
     cache_rows = local_rows(nlocal);
     cache_cols = links->maxlinks;
