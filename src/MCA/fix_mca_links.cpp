@@ -219,11 +219,15 @@ void FixMCALinks::reserve_atoms(int n)
   // (a margin, so that atoms arriving one by one seldom reallocate)
   nmax_atoms = n + n / 32 + 64;
   resize_atom_tables(nmax_atoms);
-  for (int i = old; i < nmax_atoms; i++) {
-    nlinks[i] = 0;
-    for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
-  }
+  for (int i = old; i < nmax_atoms; i++) clear_atom(i);
   host_changed();
+}
+
+// atom i without links, its law state zeros (host)
+void FixMCALinks::clear_atom(int i)
+{
+  nlinks[i] = 0;
+  for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
 }
 
 void FixMCALinks::resize_atom_tables(int nmax)
@@ -408,8 +412,7 @@ void FixMCALinks::set_arrays(int i)
 {
   reserve_atoms(i + 1);
   to_host();
-  nlinks[i] = 0;
-  for (int k = 0; k < atom_size; k++) atom_state[i][k] = 0.0;
+  clear_atom(i);
   host_changed();
 }
 

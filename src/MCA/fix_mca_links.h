@@ -135,6 +135,8 @@ class FixMCALinks : public Fix {
 
  private:
   class NeighList *list;
+  // atom i without links, its law state zeros (host)
+  void clear_atom(int i);
   // values of an automaton's record, its rows width doubles each: stored
   // rows when it moves, rows as the law reads them in restart files (a
   // restart record has one more value: its length)
