@@ -412,6 +412,63 @@ template <class DeviceType> MCAChunkSums<DeviceType> PairMCAKokkos<DeviceType>::
   return sums;
 }
 
+// a kernel of one automaton per call: over the chunks where threads share
+// the sums (chunk_size > 0), else over the automata
+template <class DeviceType, class Pass>
+static void launch_link_kernel(const Pass &pass, int nlocal, int chunk_size, int nchunks,
+                               MCALinkSums &out, std::false_type)
+{
+  if (chunk_size > 0) {
+    MCAChunkedReduce<Pass> chunked;
+    chunked.pass = pass;
+    chunked.nlocal = nlocal;
+    chunked.chunk_size = chunk_size;
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nchunks), chunked, out);
+  } else {
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), pass, out);
+  }
+}
+
+// a kernel of a chunk per call (MCALinkPassBatched): the chunks, or one
+template <class DeviceType, class Pass>
+static void launch_link_kernel(Pass pass, int nlocal, int chunk_size, int nchunks, MCALinkSums &out,
+                               std::true_type)
+{
+  pass.nlocal = nlocal;
+  pass.chunk_size = chunk_size;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, chunk_size > 0 ? nchunks : 1), pass,
+                          out);
+}
+
+/* ----------------------------------------------------------------------
+   the batched elastic link pass (mca_link_batch.h) on host threads, for
+   the models it applies to (PairMCA::batched_link_pass_applies); false
+   where it does not run (a GPU: one link per thread there)
+------------------------------------------------------------------------- */
+
+namespace LAMMPS_NS {
+template <class DeviceType, bool Host> struct MCABatchedLinkKernel {
+  static bool run(PairMCAKokkos<DeviceType> &, bool, MCALinkSums &) { return false; }
+};
+
+template <class DeviceType> struct MCABatchedLinkKernel<DeviceType, true> {
+  static bool run(PairMCAKokkos<DeviceType> &pair, bool commit, MCALinkSums &sums)
+  {
+    if (!pair.batched_link_pass_applies()) return false;
+    pair.template batched_link_kernel<void>(commit, sums);
+    return true;
+  }
+};
+
+}    // namespace LAMMPS_NS
+
+template <class DeviceType>
+template <class Host>
+void PairMCAKokkos<DeviceType>::batched_link_kernel(bool commit, MCALinkSums &sums)
+{
+  link_kernel<MCALinkPassBatched>(commit, sums);
+}
+
 /* ----------------------------------------------------------------------
    a kernel over the links with the link sums and the energy tally: the
    link pass of a law (MCALinkPassOf<Law>::type) or the pass of the pairs
@@ -431,15 +488,8 @@ void PairMCAKokkos<DeviceType>::run_link_kernel(Pass &pass, bool commit, MCALink
   pass.tally.vflag_atom = vflag_atom;
   // (a reduction sets its result)
   MCALinkSums kernel_sums;
-  if (need_dup()) {
-    MCAChunkedReduce<Pass> chunked;
-    chunked.pass = pass;
-    chunked.nlocal = atom->nlocal;
-    chunked.chunk_size = chunk_size;
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, chunks()), chunked, kernel_sums);
-  } else {
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), pass, kernel_sums);
-  }
+  launch_link_kernel<DeviceType>(pass, atom->nlocal, need_dup() ? chunk_size : 0, chunks(),
+                                 kernel_sums, MCAPassPerChunk<Pass>());
   sums += kernel_sums;
 }
 
@@ -592,7 +642,8 @@ template <class DeviceType> void PairMCAKokkos<DeviceType>::compute(int eflag, i
   const MCAPairViews<DeviceType> d = views();
   MCALinkSums sums;
   if (!plastic()) {
-    link_kernel<MCALinkPassOf<LAW_ELASTIC>::template type>(commit, sums);
+    if (!MCABatchedLinkKernel<DeviceType>::run(*this, commit, sums))
+      link_kernel<MCALinkPassOf<LAW_ELASTIC>::template type>(commit, sums);
   } else if (commit) {
     plastic_return(commit);
     link_kernel<MCALinkPassOf<LAW_PLASTIC>::template type>(commit, sums);

@@ -71,8 +71,18 @@ template <class DeviceType> struct MCAScatter {
    and stress.
 ------------------------------------------------------------------------- */
 
+// the batched elastic link pass where the style runs on host threads
+// (pair_mca_kokkos.cpp); nothing elsewhere.  (The execution space, not the
+// memory space: a GPU's unified memory is accessible from the host too)
+template <class DeviceType,
+          bool Host = Kokkos::SpaceAccessibility<typename DeviceType::execution_space,
+                                                 Kokkos::HostSpace>::accessible>
+struct MCABatchedLinkKernel;
+
 template <class DeviceType>
 class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public KokkosBase {
+  template <class, bool> friend struct MCABatchedLinkKernel;
+
  public:
   PairMCAKokkos(class LAMMPS *);
   ~PairMCAKokkos() override;
@@ -124,6 +134,8 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   // the chunked sums of the predictor and link passes
   MCAChunkSums<DeviceType> chunk_sums() const;
   template <class Pass> void run_link_kernel(Pass &, bool commit, struct MCALinkSums &);
+  // (a member template: made only for host threads, MCABatchedLinkKernel)
+  template <class Host> void batched_link_kernel(bool commit, struct MCALinkSums &);
   // a kernel over the links with the link sums: Pass<DeviceType, Sums, TallyScatter>
   template <template <class, class, class> class Pass>
   void link_kernel(bool commit, struct MCALinkSums &);

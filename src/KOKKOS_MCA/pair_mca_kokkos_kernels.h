@@ -24,6 +24,7 @@
 
 #include "atom_kokkos.h"
 #include "mca_geometry.h"
+#include "mca_link_batch.h"
 #include "mca_link_passes.h"
 #include "pair_mca_kokkos.h"
 
@@ -402,6 +403,39 @@ template <class DeviceType, class Sums, class TallyScatter, int Law> struct MCAL
 template <int Law> struct MCALinkPassOf {
   template <class DeviceType, class Sums, class TallyScatter>
   using type = MCALinkPass<DeviceType, Sums, TallyScatter, Law>;
+};
+
+/* ----------------------------------------------------------------------
+   the elastic link pass on batches of links (mca_link_batch.h), on host
+   threads only: the same numbers as MCALinkPass<LAW_ELASTIC>, a chunk of
+   automata per call (all of them where one thread adds to the sums
+   directly: chunk_size 0).  A host function: the kernel never runs on a
+   GPU (MCABatchedLinkKernel)
+------------------------------------------------------------------------- */
+
+template <class DeviceType, class Sums, class TallyScatter> struct MCALinkPassBatched {
+  typedef DeviceType device_type;
+  typedef MCALinkSums value_type;
+  MCAPairViews<DeviceType> d;
+  Sums sums;
+  MCAKokkosTally<TallyScatter> tally;
+  MCALinkPassFlags flags;
+  int nlocal, chunk_size;
+
+  void operator()(const int c, MCALinkSums &ev) const
+  {
+    const int first = chunk_size > 0 ? c * chunk_size : 0;
+    const int last = chunk_size > 0 ? chunk_end(c, chunk_size, nlocal) : nlocal;
+    MCALinkBatch batch;
+    link_pass_batched(evaluate_link_batch, batch, d, sums, tally, flags, ev, first, last);
+  }
+};
+
+// a kernel that takes a chunk of automata per call (else one automaton)
+template <class Pass> struct MCAPassPerChunk : std::false_type {
+};
+template <class DeviceType, class Sums, class TallyScatter>
+struct MCAPassPerChunk<MCALinkPassBatched<DeviceType, Sums, TallyScatter>> : std::true_type {
 };
 
 /* ----------------------------------------------------------------------

@@ -189,12 +189,22 @@ namespace MCAKernels {
 
   // cosine and sine; the twist per step is tiny, where a series is exact
   // to round-off (the first term left out is phi^6/720 < 2e-21)
+  MCA_INLINE bool cos_sin_by_series(double phi)
+  {
+    return fabs(phi) < 1.0e-3;
+  }
+
+  MCA_FORCE_INLINE void cos_sin_series(double phi, double &c, double &s)
+  {
+    const double p2 = phi * phi;
+    c = 1.0 - 0.5 * p2 * (1.0 - p2 / 12.0);
+    s = phi * (1.0 - p2 / 6.0 * (1.0 - p2 / 20.0));
+  }
+
   MCA_FORCE_INLINE void cos_sin(double phi, double &c, double &s)
   {
-    if (fabs(phi) < 1.0e-3) {
-      const double p2 = phi * phi;
-      c = 1.0 - 0.5 * p2 * (1.0 - p2 / 12.0);
-      s = phi * (1.0 - p2 / 6.0 * (1.0 - p2 / 20.0));
+    if (cos_sin_by_series(phi)) {
+      cos_sin_series(phi, c, s);
     } else {
       c = cos(phi);
       s = sin(phi);

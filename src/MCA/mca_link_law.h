@@ -332,8 +332,28 @@ namespace MCAKernels {
     contact_slip(n, n_old, mo.del, del_old, mo.q_lo, mo.q_hi, e.w_lo, e.w_hi, e.dt, mo.dl);
   }
 
+  /* the cosine and sine of the pair's twist in a step, as the law takes
+     them: MCAExactTwist (every pass but one), or MCASeriesTwist, the series
+     only, for a loop over several links at once that a call of cos() and
+     sin() would keep from being vectorized (PairMCA's batched link pass):
+     it marks a twist beyond the series' range (the same test as cos_sin),
+     whose link the caller evaluates again with MCAExactTwist */
+  struct MCAExactTwist {
+    MCA_FUNCTION void cos_sin_of(double phi, double &c, double &s) { cos_sin(phi, c, s); }
+  };
+  struct MCASeriesTwist {
+    bool beyond = false;
+    MCA_FUNCTION void cos_sin_of(double phi, double &c, double &s)
+    {
+      beyond = !cos_sin_by_series(phi);
+      cos_sin_series(phi, c, s);
+    }
+  };
+
+  template <class Twist>
   MCA_FORCE_INLINE void shear_traction(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
-                                       const MCAMaterial &m_hi, const double *n, MCALinkMotion &mo)
+                                       const MCAMaterial &m_hi, const double *n, MCALinkMotion &mo,
+                                       Twist &twist)
   {
     double *lo = hist + H_LO;
     double *hi = hist + H_HI;
@@ -343,7 +363,7 @@ namespace MCAKernels {
     const double *n_old = hist + H_NPREV;
     double rot[9];
     double cos_phi, sin_phi;
-    cos_sin(phi, cos_phi, sin_phi);
+    twist.cos_sin_of(phi, cos_phi, sin_phi);
     pair_rotation(n_old, n, cos_phi, sin_phi, rot);
     rotate_with_pair(lo + HALF_T, rot, n, true);
     rotate_with_pair(hi + HALF_T, rot, n, true);
@@ -360,6 +380,12 @@ namespace MCAKernels {
       lo[HALF_T + m] += 2.0 * m_lo.shear * dg_lo[m];
       hi[HALF_T + m] += 2.0 * m_hi.shear * dg_hi[m];
     }
+  }
+  MCA_FORCE_INLINE void shear_traction(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
+                                       const MCAMaterial &m_hi, const double *n, MCALinkMotion &mo)
+  {
+    MCAExactTwist twist;
+    shear_traction(hist, e, m_lo, m_hi, n, mo, twist);
   }
 
   // contact area of the step (thesis 3.65)
@@ -519,21 +545,23 @@ namespace MCAKernels {
   // the elastic trial of a step: the tractions of both halves, the
   // contact area and the couples, in the row (m_lo, m_hi: the caller's
   // local copies of the materials)
+  template <class Twist>
   MCA_FORCE_INLINE void elastic_trial(double *hist, const MCALinkEnds &e, const MCAMaterial &m_lo,
                                       const MCAMaterial &m_hi, MCALinkForces &out,
-                                      MCALinkMotion &mo)
+                                      MCALinkMotion &mo, Twist &twist)
   {
     link_motion(hist, e, out, mo);
     normal_traction(hist, e, m_lo, m_hi, mo);
-    shear_traction(hist, e, m_lo, m_hi, out.n, mo);
+    shear_traction(hist, e, m_lo, m_hi, out.n, mo, twist);
     link_area(hist, e, m_lo, m_hi, out);
     link_couple(hist, e, m_lo, m_hi, mo, out);
   }
 
   // one step of a linked pair: hist is updated (the caller keeps or
   // discards it), out holds what acts on the automata
+  template <class Twist>
   MCA_FORCE_INLINE void linked_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
-                                    const MCAMaterial &mat_hi, MCALinkForces &out)
+                                    const MCAMaterial &mat_hi, MCALinkForces &out, Twist &twist)
   {
     // local copies of the materials: the stores into the row cannot change
     // them, so they stay in registers where the call is not inlined.  (Not
@@ -541,13 +569,20 @@ namespace MCAKernels {
     // stores stalls)
     const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
     MCALinkMotion mo;
-    elastic_trial(hist, e, m_lo, m_hi, out, mo);
+    elastic_trial(hist, e, m_lo, m_hi, out, mo, twist);
     link_force(hist, out);
     link_torques(hist, *e.layout, mo, out);
     // optional parts: one test each when they are off
     const int damping = e.layout->link_offset[PART_DAMPING];
     if (damping >= 0) link_damping(hist + damping, e, m_lo, m_hi, mo, out);
     link_work(hist, mo, out);
+  }
+
+  MCA_FORCE_INLINE void linked_pair(double *hist, const MCALinkEnds &e, const MCAMaterial &mat_lo,
+                                    const MCAMaterial &mat_hi, MCALinkForces &out)
+  {
+    MCAExactTwist twist;
+    linked_pair(hist, e, mat_lo, mat_hi, out, twist);
   }
 
   /* ----------------------------------------------------------------------
@@ -570,7 +605,8 @@ namespace MCAKernels {
   {
     const MCAMaterial m_lo = mat_lo, m_hi = mat_hi;
     MCALinkMotion mo;
-    elastic_trial(hist, e, m_lo, m_hi, out, mo);
+    MCAExactTwist twist;
+    elastic_trial(hist, e, m_lo, m_hi, out, mo, twist);
     hist[e.layout->link_offset[PART_PLASTICITY] + P_WORK_OLD] = link_work_old(hist, mo);
     link_mean_tractions(hist, out);
     for (int m = 0; m < 3; m++) out.trac[m] = out.sig * out.n[m] + out.t[m];

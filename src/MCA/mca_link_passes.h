@@ -221,6 +221,44 @@ namespace MCAKernels {
         sums.partner(add, to, LS_BMAT + 3 * a + b, out.trac[a] * out.n[b]);
   }
 
+  // what a linked pair's step gives automaton i, which evaluates it, and a
+  // local partner j: force, torque and T n^T, the count of long links,
+  // energy and virial (elastic_work: the pair's elastic energy).  Each pass
+  // over linked pairs adds them in the order of the automata and their links
+  template <class D, class Sums, class Thread, class Tally, class Totals>
+  MCA_FORCE_INLINE void add_link_outputs(const D &d, const Sums &sums, Thread &add,
+                                         const Tally &tally, const MCALinkPassFlags &p, int i,
+                                         int j, double elastic_work, const MCALinkForces &out,
+                                         Totals &totals)
+  {
+    const bool jlocal = j < d.nlocal;
+    const bool ilo = d.tag(i) < d.tag(j);
+    // counted once per owner: the warning halves the sum
+    if (out.r * out.r > p.cutsq) totals.nlong += jlocal ? 2 : 1;
+
+    // force on lo is f, on hi -f; T n^T is the same for both
+    const double sign = ilo ? 1.0 : -1.0;
+    // (a value chosen per component, not a pointer to one of the two
+    // arrays: a pointer chosen at run time puts all of out in the local
+    // memory of a GPU thread, which costs the link pass 10 %)
+    for (int k = 0; k < 3; k++) {
+      sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
+      sums.own(add, i, LS_TORQUE + k, ilo ? out.tq_lo[k] : out.tq_hi[k]);
+    }
+    add_traction_moment(sums, add, i, out);
+    if (jlocal) {
+      const auto to = sums.partner_of(add, j);
+      for (int k = 0; k < 3; k++) {
+        sums.partner(add, to, LS_FORCE + k, -out.f[k]);
+        sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
+      }
+      add_traction_moment_to_partner(sums, add, to, out);
+    }
+
+    // energy and virial: the whole pair, or this owner's half of it
+    if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, elastic_work, out.f);
+  }
+
   // the law of a link pass: elastic (also with damping), or with
   // plasticity: a step (the second pass, after the trial pass and the
   // return of the automata) or a setup (no return: the elastic sequence on
@@ -237,7 +275,6 @@ namespace MCAKernels {
       double *row;
       int j;
       if (!evaluates<LINK_LINKED>(d, i, m, row, j)) continue;
-      const bool jlocal = j < d.nlocal;
       const bool ilo = d.tag(i) < d.tag(j);
       const int lo = ilo ? i : j, hi = ilo ? j : i;
 
@@ -270,30 +307,7 @@ namespace MCAKernels {
       double elastic_work = h[H_WORK];
       if (Law != LAW_ELASTIC) elastic_work -= h[d.layout.link_offset[PART_PLASTICITY] + P_WORK];
       if (p.commit) close_row(d.layout, h, row);
-      // counted once per owner: the warning halves the sum
-      if (out.r * out.r > p.cutsq) totals.nlong += jlocal ? 2 : 1;
-
-      // force on lo is f, on hi -f; T n^T is the same for both
-      const double sign = ilo ? 1.0 : -1.0;
-      // (a value chosen per component, not a pointer to one of the two
-      // arrays: a pointer chosen at run time puts all of out in the local
-      // memory of a GPU thread, which costs the link pass 10 %)
-      for (int k = 0; k < 3; k++) {
-        sums.own(add, i, LS_FORCE + k, sign * out.f[k]);
-        sums.own(add, i, LS_TORQUE + k, ilo ? out.tq_lo[k] : out.tq_hi[k]);
-      }
-      add_traction_moment(sums, add, i, out);
-      if (jlocal) {
-        const auto to = sums.partner_of(add, j);
-        for (int k = 0; k < 3; k++) {
-          sums.partner(add, to, LS_FORCE + k, -out.f[k]);
-          sums.partner(add, to, LS_TORQUE + k, out.tq_hi[k]);
-        }
-        add_traction_moment_to_partner(sums, add, to, out);
-      }
-
-      // energy and virial: the whole pair, or this owner's half of it
-      if (tally.wanted()) tally.link(totals, d, i, j, jlocal, sign, elastic_work, out.f);
+      add_link_outputs(d, sums, add, tally, p, i, j, elastic_work, out, totals);
     }
   }
 

@@ -116,6 +116,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   writedata = 0;
 
   tolerance_default = 0.02;
+  batch_links = true;
   cutoff_user = -1.0;
   nmax = 0;
   comm_stage = STAGE_COUNT;
@@ -171,7 +172,8 @@ void PairMCA::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style mca [tolerance t] [capacity N] [cutoff rc]
+   pair_style mca [tolerance t] [capacity N] [cutoff rc] [precision p]
+     [batch yes|no] [scatter w seed] [<slot> <part> ...]
 ------------------------------------------------------------------------- */
 
 void PairMCA::settings(int narg, char **arg)
@@ -202,6 +204,11 @@ void PairMCA::settings(int narg, char **arg)
         error->all(FLERR, "Pair style mca precision must be double or mixed, got {}",
                    arg[iarg + 1]);
       mixed = strcmp(arg[iarg + 1], "mixed") == 0;
+    } else if (strcmp(arg[iarg], "batch") == 0) {
+      // the elastic link pass over batches of links (pair_mca_batch.cpp) or
+      // link by link: the same numbers, a choice of speed
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style mca batch", error);
+      batch_links = utils::logical(FLERR, arg[iarg + 1], false, lmp) != 0;
     } else if (strcmp(arg[iarg], "scatter") == 0) {
       // scatter w seed: strength factors of the links uniform in [1 - w, 1 + w]
       if (iarg + 3 > narg)
@@ -234,7 +241,7 @@ void PairMCA::settings(int narg, char **arg)
         if (slots.find(p.slot) == std::string::npos) slots += std::string(", ") + p.slot;
       error->all(FLERR,
                  "Unknown pair_style mca keyword {} (allowed: tolerance, capacity, cutoff, "
-                 "precision, scatter{})",
+                 "precision, batch, scatter{})",
                  arg[iarg], slots);
     }
     iarg += 2;
@@ -1075,7 +1082,9 @@ void PairMCA::compute(int eflag, int vflag)
     comm_stage = STAGE_RETURN;
     MCACompat::forward_comm(comm, this);
   }
-  if (!plastic()) {
+  if (!plastic() && batched_link_pass_applies()) {
+    batched_link_pass(d, sums, tally, p, totals);
+  } else if (!plastic()) {
     for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_ELASTIC>(d, sums, tally, p, i, totals);
   } else if (p.commit) {
     for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_PLASTIC>(d, sums, tally, p, i, totals);

@@ -27,6 +27,8 @@ PairStyle(mca,PairMCA);
 
 namespace LAMMPS_NS {
 
+struct MCAHostTotals;
+
 class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
  public:
   PairMCA(class LAMMPS *);
@@ -80,6 +82,7 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   std::vector<int> friction_given;
 
   double tolerance_default;    // relative distance tolerance for links
+  bool batch_links;            // the elastic link pass over batches of links (pair_mca_batch.cpp)
   double cutoff_user;          // pair cutoff given by the user, else < 0
 
   // per-atom work arrays (local + ghost)
@@ -184,6 +187,11 @@ class PairMCA : public PairMCALinked, public MCAStableTimestep::Comm {
   struct HostLinkSums;
   struct HostTally;
   HostData host_data();
+  // the elastic link pass over batches of links (pair_mca_batch.cpp), for
+  // the models it applies to (batched_link_pass_applies)
+  bool batched_link_pass_applies() const;
+  void batched_link_pass(const HostData &, const HostLinkSums &, const HostTally &,
+                         const MCAKernels::MCALinkPassFlags &, MCAHostTotals &);
 };
 
 }    // namespace LAMMPS_NS

@@ -308,10 +308,13 @@ def test_chain_stopped_by_its_time_limit_continues_job_by_job(slurm, tmp_path, u
     """Jobs of 3 minutes with a margin of 177 s: each segment stops cleanly
     after about 3 s (LAMMPS's timer timeout, computed from the job's time
     left in squeue), writes a restart file, and the next job continues;
-    the last one finishes with the uninterrupted run's final state."""
+    the last one finishes with the uninterrupted run's final state.  The
+    jobs run on one rank: the whole run must take longer than a segment,
+    and on 2 ranks of the 2-core test machine it takes 2.9 s since the
+    batched link pass (8 Dec 2026; 4 s before), 5.5 s on one."""
     d = job_dir(tmp_path, "chain")
     current()
-    rc, _, out = sbatch(slurm, d, ["--ntasks=2", "--time=3", "chain.sbatch", "start"] + CHAIN,
+    rc, _, out = sbatch(slurm, d, ["--ntasks=1", "--time=3", "chain.sbatch", "start"] + CHAIN,
                         wait=False, extra_env={"MCA_CHAIN_MARGIN": "177"})
     assert rc == 0, out
     wait_for(lambda: chain_state(d).get("status") in ("done", "failed"), 300,

@@ -175,7 +175,7 @@ def test_parts_are_chosen_by_keyword(build, tmp_path):
             ("mca elastic hooke", r"Unknown elastic part hooke for pair_style mca "
                                   r"\(allowed: elastic\)"),
             ("mca plastic vonmises", r"Unknown pair_style mca keyword plastic \(allowed: "
-                                     r"tolerance, capacity, cutoff, precision, scatter, elastic, "
+                                     r"tolerance, capacity, cutoff, precision, batch, scatter, elastic, "
                                      r"damping, plasticity, fracture, contacts, healing\)")):
         bad = SCENE.replace("pair_style      mca\n", f"pair_style      {style}\n")
         result = build.run(bad, tmp_path / style.split()[1], check=False, timeout=120)

@@ -130,3 +130,15 @@ if(MCA_WERROR AND (CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang"))
     set_property(SOURCE ${_kokkos_mca_sources} APPEND PROPERTY COMPILE_OPTIONS "-Wno-unused-parameter")
   endif()
 endif()
+
+# the elastic link pass over batches of links (src/MCA/pair_mca_batch.cpp):
+# -O3 for the loop vectorizer and the complete unrolling of the law's small
+# loops; no errno and no traps, so that sqrt and the guarded divisions need
+# no branch in the loop; no contracted multiply-adds, so that each column
+# computes what the scalar pass computes, bit for bit, on any target
+option(MCA_BATCH_VECTORIZE "Compile the batched MCA link pass for the loop vectorizer" ON)
+mark_as_advanced(MCA_BATCH_VECTORIZE)
+if(MCA_BATCH_VECTORIZE AND (CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang"))
+  set_property(SOURCE ${LAMMPS_SOURCE_DIR}/MCA/pair_mca_batch.cpp APPEND PROPERTY COMPILE_OPTIONS
+               -O3 -fno-math-errno -fno-trapping-math -ffp-contract=off)
+endif()
