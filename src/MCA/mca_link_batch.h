@@ -12,7 +12,8 @@
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
-   The elastic link pass on several links at once (CPU style, host only):
+   The elastic link pass on several links at once (the CPU style, and the
+   kk style on host threads: host only):
    the links the automata evaluate are taken MCA_LINK_BATCH at a time, in
    the order of link_pass_of; what the law reads of each is copied into
    the columns of a batch (one column a link), the law (linked_pair, the
@@ -22,7 +23,7 @@
    bit, where the compiler contracts no multiply-add (pair_mca_batch.cpp
    and cmake/Modules/Packages/MCA.cmake say how that file is compiled).
    For the elastic law alone, precision double, without damping
-   (PairMCA::batched_link_pass).
+   (PairMCA::batched_link_pass_applies).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_MCA_LINK_BATCH_H
