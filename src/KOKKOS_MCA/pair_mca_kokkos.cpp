@@ -463,7 +463,7 @@ template <class DeviceType> struct MCABatchedLinkKernel<DeviceType, true> {
 }    // namespace LAMMPS_NS
 
 template <class DeviceType>
-template <class Host>
+template <class Deferred>
 void PairMCAKokkos<DeviceType>::batched_link_kernel(bool commit, MCALinkSums &sums)
 {
   link_kernel<MCALinkPassBatched>(commit, sums);

@@ -134,8 +134,9 @@ class PairMCAKokkos : private MCAKokkos::RequiresKokkos, public PairMCA, public 
   // the chunked sums of the predictor and link passes
   MCAChunkSums<DeviceType> chunk_sums() const;
   template <class Pass> void run_link_kernel(Pass &, bool commit, struct MCALinkSums &);
-  // (a member template: made only for host threads, MCABatchedLinkKernel)
-  template <class Host> void batched_link_kernel(bool commit, struct MCALinkSums &);
+  // (a member template, so that only MCABatchedLinkKernel's use for host
+  // threads makes it: Deferred is not used)
+  template <class Deferred> void batched_link_kernel(bool commit, struct MCALinkSums &);
   // a kernel over the links with the link sums: Pass<DeviceType, Sums, TallyScatter>
   template <template <class, class, class> class Pass>
   void link_kernel(bool commit, struct MCALinkSums &);

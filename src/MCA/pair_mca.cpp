@@ -1082,10 +1082,11 @@ void PairMCA::compute(int eflag, int vflag)
     comm_stage = STAGE_RETURN;
     MCACompat::forward_comm(comm, this);
   }
-  if (!plastic() && batched_link_pass_applies()) {
-    batched_link_pass(d, sums, tally, p, totals);
-  } else if (!plastic()) {
-    for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_ELASTIC>(d, sums, tally, p, i, totals);
+  if (!plastic()) {
+    if (batched_link_pass_applies())
+      batched_link_pass(d, sums, tally, p, totals);
+    else
+      for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_ELASTIC>(d, sums, tally, p, i, totals);
   } else if (p.commit) {
     for (int i = 0; i < d.nlocal; i++) link_pass_of<LAW_PLASTIC>(d, sums, tally, p, i, totals);
   } else {
